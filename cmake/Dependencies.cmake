@@ -1,0 +1,23 @@
+# Every dependency is a Debian 12 package; a missing one stops the configure step naming it.
+macro(caustica_require package debian_package)
+  find_package(${package} ${ARGN} QUIET)
+  if(NOT ${package}_FOUND)
+    message(FATAL_ERROR "Caustica needs ${package}: install the Debian package '${debian_package}' "
+                        "(scripts/setup.sh installs everything).")
+  endif()
+endmacro()
+
+caustica_require(embree libembree-dev 3)
+caustica_require(TBB libtbb-dev)
+caustica_require(OpenEXR libopenexr-dev)
+caustica_require(OpenImageIO libopenimageio-dev)
+caustica_require(assimp libassimp-dev)
+caustica_require(CLI11 libcli11-dev)
+caustica_require(flann libflann-dev)
+caustica_require(Threads libc6-dev)
+if(CAUSTICA_BUILD_TESTS)
+  caustica_require(GTest "libgtest-dev libgmock-dev")
+endif()
+if(CAUSTICA_BUILD_BENCHMARKS)
+  caustica_require(benchmark libbenchmark-dev)
+endif()

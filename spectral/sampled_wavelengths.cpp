@@ -1,0 +1,74 @@
+#include "spectral/sampled_wavelengths.h"
+
+#include "core/vecmath.h"
+
+namespace caustica {
+
+// pbrt-v4's visible-wavelength density: p(l) proportional to sech^2(0.0072 (l - 538)), a
+// smooth lobe close to the sum of the CIE matching functions, normalised over [360, 830] nm.
+float visible_wavelengths_pdf(float lambda) {
+    if (lambda < LambdaMin || lambda > LambdaMax) return 0;
+    return 0.0039398042f / sqr(std::cosh(0.0072f * (lambda - 538)));
+}
+
+float sample_visible_wavelengths(float u) {
+    return 538 - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
+}
+
+namespace {
+constexpr float kRange = LambdaMax - LambdaMin;
+float wrap(float lambda) { return lambda > LambdaMax ? lambda - kRange : lambda; }
+} // namespace
+
+SampledWavelengths SampledWavelengths::sample_visible(float u) {
+    SampledWavelengths s;
+    s.lambda_[0] = clamp(sample_visible_wavelengths(u), LambdaMin, LambdaMax);
+    float delta = kRange / NumWavelengths;
+    for (int i = 1; i < NumWavelengths; ++i) s.lambda_[i] = wrap(s.lambda_[0] + i * delta);
+    // Balance-heuristic MIS over the rotations (see header): the same combined density for all.
+    float sum = 0;
+    for (int i = 0; i < NumWavelengths; ++i) sum += visible_wavelengths_pdf(s.lambda_[i]);
+    s.pdf_ = SampledSpectrum(sum / NumWavelengths);
+    s.hero_pdf_ = visible_wavelengths_pdf(s.lambda_[0]);
+    return s;
+}
+
+SampledWavelengths SampledWavelengths::sample_uniform(float u) {
+    SampledWavelengths s;
+    s.lambda_[0] = lerp(u, LambdaMin, LambdaMax);
+    float delta = kRange / NumWavelengths;
+    for (int i = 1; i < NumWavelengths; ++i) s.lambda_[i] = wrap(s.lambda_[0] + i * delta);
+    s.pdf_ = SampledSpectrum(1 / kRange);
+    s.hero_pdf_ = 1 / kRange;
+    return s;
+}
+
+SampledWavelengths SampledWavelengths::sample_single(float u) {
+    SampledWavelengths s = sample_visible(u);
+    s.terminate_secondary();
+    return s;
+}
+
+SampledWavelengths SampledWavelengths::fixed(float lambda) {
+    SampledWavelengths s;
+    s.lambda_ = SampledSpectrum(lambda);
+    s.pdf_ = SampledSpectrum(1);
+    s.hero_pdf_ = 1;
+    return s;
+}
+
+void SampledWavelengths::terminate_secondary() {
+    if (secondary_terminated()) return;
+    // The hero alone is an unbiased estimate with its own density; the film averages over
+    // NumWavelengths lanes, so the surviving lane carries NumWavelengths times the weight.
+    for (int i = 1; i < NumWavelengths; ++i) pdf_[i] = 0;
+    pdf_[0] = hero_pdf_ / NumWavelengths;
+}
+
+bool SampledWavelengths::secondary_terminated() const {
+    for (int i = 1; i < NumWavelengths; ++i)
+        if (pdf_[i] != 0) return false;
+    return true;
+}
+
+} // namespace caustica

@@ -1,0 +1,85 @@
+// Continuous spectral distributions, evaluated at a path's wavelengths.
+#pragma once
+
+#include "spectral/sampled_wavelengths.h"
+
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace caustica {
+
+class Spectrum {
+  public:
+    virtual ~Spectrum() = default;
+    // Value at one wavelength in nm.
+    virtual float operator()(float lambda) const = 0;
+    virtual SampledSpectrum sample(const SampledWavelengths &lambda) const {
+        SampledSpectrum s;
+        for (int i = 0; i < NumWavelengths; ++i) s[i] = (*this)(lambda[i]);
+        return s;
+    }
+    // An upper bound of the values over [LambdaMin, LambdaMax].
+    virtual float max_value() const = 0;
+    // True when the value does not depend on wavelength; lets the renderer skip dispersion work.
+    virtual bool is_constant() const { return false; }
+};
+
+using SpectrumPtr = std::shared_ptr<const Spectrum>;
+
+class ConstantSpectrum final : public Spectrum {
+  public:
+    explicit ConstantSpectrum(float c) : c_(c) {}
+    float operator()(float) const override { return c_; }
+    SampledSpectrum sample(const SampledWavelengths &) const override { return SampledSpectrum(c_); }
+    float max_value() const override { return c_; }
+    bool is_constant() const override { return true; }
+
+  private:
+    float c_;
+};
+
+// Linear interpolation between (lambda, value) pairs, zero outside their range.
+class PiecewiseLinearSpectrum final : public Spectrum {
+  public:
+    PiecewiseLinearSpectrum(std::span<const float> lambdas, std::span<const float> values);
+    // From interleaved pairs; if normalize, scaled so that its CIE Y integral equals CIE_Y_integral
+    // (how pbrt normalises illuminant spectra).
+    static std::shared_ptr<PiecewiseLinearSpectrum> from_interleaved(std::span<const float> pairs,
+                                                                      bool normalize);
+    float operator()(float lambda) const override;
+    float max_value() const override;
+    void scale(float s);
+
+  private:
+    std::vector<float> lambdas_, values_;
+};
+
+// Tabulated at every integer nm in [LambdaMin, LambdaMax]: fast lookups for CMFs and illuminants.
+class DenselySampledSpectrum final : public Spectrum {
+  public:
+    explicit DenselySampledSpectrum(const Spectrum &s);
+    float operator()(float lambda) const override;
+    float max_value() const override;
+
+  private:
+    std::vector<float> values_;
+};
+
+// Planck's law for temperature T (K), normalised to a peak value of 1 (as pbrt does).
+float blackbody(float lambda_nm, float temperature_k);
+class BlackbodySpectrum final : public Spectrum {
+  public:
+    explicit BlackbodySpectrum(float temperature_k);
+    float operator()(float lambda) const override;
+    float max_value() const override { return 1; }
+
+  private:
+    float t_, normalization_;
+};
+
+// Linear combination helpers used by the film and lights.
+// Integral of a spectrum against CIE Y (nm units); pbrt's SpectrumToPhotometric.
+float inner_product_y(const Spectrum &s);
+
+} // namespace caustica

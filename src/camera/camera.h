@@ -1,0 +1,51 @@
+// Cameras generate primary rays and, for bidirectional methods, evaluate importance We and the
+// densities needed to connect light-path vertices to the lens (Veach 1997 ch. 10; pbrt-v4 16.1).
+#pragma once
+
+#include "core/transform.h"
+#include "geometry/ray.h"
+#include "spectral/sampled_wavelengths.h"
+
+#include <memory>
+#include <optional>
+
+namespace caustica {
+
+struct CameraSample {
+    Vec2f p_film;              // raster coordinates, including the filter offset
+    Vec2f p_lens;              // [0,1)^2
+    float filter_weight = 1;
+};
+
+struct CameraRay {
+    Ray ray;
+    SampledSpectrum weight{1};
+};
+
+// For t = 1 connections: importance arriving at ref from a sampled lens point.
+struct CameraWiSample {
+    SampledSpectrum We;
+    Vec3f wi;            // from ref towards the lens point, unit
+    float pdf = 0;       // solid angle at ref
+    Vec2f p_raster;      // where the contribution lands on the film
+    Vec3f p_lens, n_lens;
+};
+
+class Camera {
+  public:
+    virtual ~Camera() = default;
+    virtual std::optional<CameraRay> generate_ray(const CameraSample &sample,
+                                                  const SampledWavelengths &lambda) const = 0;
+    // Importance of a ray leaving the lens; *p_raster receives its film position. Zero when
+    // the ray misses the film.
+    virtual SampledSpectrum We(const Ray &ray, const SampledWavelengths &lambda,
+                               Vec2f *p_raster = nullptr) const = 0;
+    virtual void pdf_we(const Ray &ray, float *pdf_pos, float *pdf_dir) const = 0;
+    virtual std::optional<CameraWiSample> sample_wi(Vec3f ref, Vec2f u,
+                                                    const SampledWavelengths &lambda) const = 0;
+    virtual Vec3f position() const = 0;
+};
+
+using CameraPtr = std::shared_ptr<const Camera>;
+
+} // namespace caustica

@@ -1,0 +1,42 @@
+// What an intersection or a sampled point on a surface knows about it.
+#pragma once
+
+#include "core/vecmath.h"
+#include "geometry/ray.h"
+
+namespace caustica {
+
+class Material;
+class Light;
+struct MediumInterface;
+
+struct SurfaceInteraction {
+    Vec3f p;        // on the surface (not o + t d), as robust spawning requires
+    Vec3f n;        // geometric normal, unit; flipped by ReverseOrientation / handedness
+    Vec2f uv;
+    Vec3f wo;       // towards the ray origin, unit
+    Vec3f dpdu, dpdv;
+    struct {
+        Vec3f n;    // shading normal, unit, in the hemisphere of n
+        Vec3f dpdu, dpdv;
+    } shading;
+    float t = 0;    // ray parameter of the hit
+    int face_index = 0;
+
+    const Material *material = nullptr;      // null: a boundary between media only
+    const Light *area_light = nullptr;       // emitter attached to this primitive, if any
+    const MediumInterface *medium_interface = nullptr;
+
+    Ray spawn_ray(Vec3f d) const { return caustica::spawn_ray(p, n, d); }
+    Ray spawn_ray_to(Vec3f p_to, Vec3f n_to = {}) const {
+        return caustica::spawn_ray_to(p, n, p_to, n_to);
+    }
+    // Replaces the shading frame; keeps the shading normal on the geometric normal's side.
+    void set_shading(Vec3f ns, Vec3f dpdus, Vec3f dpdvs) {
+        shading.n = face_forward(ns, n);
+        shading.dpdu = dpdus;
+        shading.dpdv = dpdvs;
+    }
+};
+
+} // namespace caustica

@@ -1,0 +1,35 @@
+// Shapes as seen by lights: area, uniform area sampling and solid-angle sampling from a point.
+// Intersection itself goes through Embree (geometry/embree_scene.h).
+#pragma once
+
+#include "core/vecmath.h"
+
+#include <optional>
+
+namespace caustica {
+
+struct ShapeSample {
+    Vec3f p, n;      // sampled point and its (oriented) geometric normal
+    Vec2f uv;
+    float pdf = 0;   // area density from sample(u); solid-angle density from sample(ref, u)
+};
+
+class Shape {
+  public:
+    virtual ~Shape() = default;
+    virtual float area() const = 0;
+    virtual Bounds3f bounds() const = 0;
+    // Uniform by area.
+    virtual std::optional<ShapeSample> sample(Vec2f u) const = 0;
+    // Sampled as seen from ref; pdf with respect to solid angle at ref. Default: area sampling
+    // converted to solid angle.
+    virtual std::optional<ShapeSample> sample(Vec3f ref, Vec2f u) const;
+    // Solid-angle density of sample(ref, u) producing direction wi (hit found by ray casting
+    // against this shape alone).
+    virtual float pdf(Vec3f ref, Vec3f wi) const;
+    // Intersection of a ray with this shape alone (used by pdf and light tracing).
+    struct Hit { float t; Vec3f p, n; Vec2f uv; };
+    virtual std::optional<Hit> intersect(Vec3f o, Vec3f d, float t_max) const = 0;
+};
+
+} // namespace caustica

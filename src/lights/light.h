@@ -1,0 +1,78 @@
+// Light sources: emission, sampling of incident illumination (for next-event estimation) and
+// sampling of emitted rays (for light tracing, BDPT, photon mapping and VCM).
+#pragma once
+
+#include "core/vecmath.h"
+#include "geometry/ray.h"
+#include "spectral/sampled_wavelengths.h"
+
+#include <memory>
+#include <optional>
+
+namespace caustica {
+
+enum class LightType {
+    DeltaPosition,  // point, spot
+    DeltaDirection, // distant
+    Area,           // emission from a shape's surface
+    Infinite,       // emission from infinitely far away (environment)
+};
+inline bool is_delta_light(LightType t) {
+    return t == LightType::DeltaPosition || t == LightType::DeltaDirection;
+}
+
+// The receiving point for next-event estimation; n is zero for points in media.
+struct LightSampleContext {
+    Vec3f p, n, ns;
+};
+
+struct LightLiSample {
+    SampledSpectrum L;   // radiance (or intensity / irradiance for delta lights) arriving
+    Vec3f wi;            // unit direction from the receiving point towards the light
+    float pdf = 0;       // solid angle (1 for delta lights)
+    Vec3f p_light, n_light; // point on the light and its normal (n zero for point lights)
+    bool is_infinite = false; // p_light is only a direction: occlusion ray is unbounded
+};
+
+struct LightLeSample {
+    SampledSpectrum L;
+    Ray ray;
+    Vec3f n;                   // normal at the ray origin (zero if none)
+    float pdf_pos = 0, pdf_dir = 0;
+};
+
+class Light {
+  public:
+    virtual ~Light() = default;
+    virtual LightType type() const = 0;
+    // Called once after the scene is built (distant and infinite lights need its bounds).
+    virtual void preprocess(const Bounds3f &scene_bounds) { (void)scene_bounds; }
+    // Total emitted power at the wavelengths, for light selection by power.
+    virtual SampledSpectrum phi(const SampledWavelengths &lambda) const = 0;
+
+    virtual std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
+                                                   const SampledWavelengths &lambda) const = 0;
+    virtual float pdf_li(const LightSampleContext &ctx, Vec3f wi) const = 0;
+
+    // Area lights: radiance leaving point p (normal n, uv) in direction w.
+    virtual SampledSpectrum L(Vec3f p, Vec3f n, Vec2f uv, Vec3f w,
+                              const SampledWavelengths &lambda) const {
+        (void)p; (void)n; (void)uv; (void)w; (void)lambda;
+        return {};
+    }
+    // Infinite lights: radiance arriving along a ray that escapes the scene.
+    virtual SampledSpectrum Le(const Ray &ray, const SampledWavelengths &lambda) const {
+        (void)ray; (void)lambda;
+        return {};
+    }
+
+    // Emitted-ray sampling for light paths; pdf_pos is per area (or per unit of the disk
+    // perpendicular to a distant/infinite light), pdf_dir per solid angle.
+    virtual std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2,
+                                                   const SampledWavelengths &lambda) const = 0;
+    virtual void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const = 0;
+};
+
+using LightPtr = std::shared_ptr<Light>;
+
+} // namespace caustica

@@ -1,0 +1,36 @@
+// Materials turn textures at a surface point into a BSDF for the path's wavelengths.
+#pragma once
+
+#include "core/scratch_buffer.h"
+#include "materials/bsdf.h"
+#include "spectral/sampled_wavelengths.h"
+
+namespace caustica {
+
+struct SurfaceInteraction;
+
+class Material {
+  public:
+    virtual ~Material() = default;
+    // The BxDF is allocated in scratch; lambda is not modified here (dispersion is reported by
+    // BSDFSample::dispersive and acted on by the integrator).
+    virtual BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
+                          ScratchBuffer &scratch) const = 0;
+    // Scene analysis: does this material make the scattering direction depend on wavelength?
+    virtual bool is_dispersive() const { return false; }
+    // Does any of its lobes include a delta (perfectly specular) component?
+    virtual bool has_specular_lobe() const { return false; }
+    virtual bool has_subsurface() const { return false; }
+    // Beer-Lambert absorption coefficient (per unit length) of the material's interior, for
+    // dielectrics given sigma_a or a transmittance colour at a distance. Integrators track when a
+    // path is inside and attenuate by exp(-sigma_a * distance). Zero when the interior is clear.
+    virtual SampledSpectrum interior_sigma_a(const SampledWavelengths &lambda) const {
+        (void)lambda;
+        return {};
+    }
+    virtual bool has_interior_absorption() const { return false; }
+};
+
+using MaterialPtr = std::shared_ptr<const Material>;
+
+} // namespace caustica
