@@ -1,1 +1,59 @@
-int main() { return 0; }
+// The caustica command: `caustica render SCENE ...` and `caustica info SCENE`.
+#include "cli/commands.h"
+#include "core/error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char **argv) {
+    using namespace caustica;
+    CLI::App app{"Caustica: a spectral bidirectional renderer for pbrt-v4 scenes"};
+    app.require_subcommand(1);
+
+    RenderCommandOptions render;
+    CLI::App *render_cmd = app.add_subcommand("render", "Render a pbrt-v4 scene file");
+    render_cmd->add_option("scene", render.scene_path, "Scene file (.pbrt)")->required();
+    render_cmd->add_option("--integrator", render.integrator,
+                           "pt (also: path, volpath); overrides the scene's Integrator");
+    auto *spp = render_cmd->add_option("--spp", render.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 24));
+    auto *time = render_cmd->add_option("--time", render.seconds, "Render for this many seconds")
+                     ->check(CLI::Range(0.001, 1e7));
+    spp->excludes(time);
+    render_cmd->add_option("--threads", render.threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, 4096));
+    render_cmd->add_option("--seed", render.seed, "Random seed");
+    render_cmd->add_option("--resolution", render.resolution, "Image size WxH");
+    render_cmd->add_option("-o,--output", render.exr_path, "Output image (.exr, or .png)");
+    render_cmd->add_option("--png", render.png_path, "Also write an 8-bit sRGB PNG here");
+    render_cmd->add_option("--stats-json", render.stats_json, "Write render statistics as JSON");
+    render_cmd->add_option("--wavelength", render.wavelength,
+                           "Monochromatic render: radiance at this wavelength (nm) as grey");
+    render_cmd->add_flag("--single-wavelength", render.single_wavelength,
+                         "One wavelength per path instead of hero-wavelength sampling");
+    render_cmd->add_flag("-q,--quiet", render.quiet, "No progress output");
+
+    std::string info_scene;
+    CLI::App *info_cmd = app.add_subcommand("info", "Describe what a scene contains");
+    info_cmd->add_option("scene", info_scene, "Scene file (.pbrt)")->required();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError &e) {
+        int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    }
+
+    try {
+        if (*render_cmd) return run_render(render);
+        if (*info_cmd) return run_info(info_scene);
+    } catch (const InputError &e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "caustica: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

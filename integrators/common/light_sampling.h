@@ -1,0 +1,25 @@
+// Next-event estimation shared by the integrators that connect surface points to lights.
+#pragma once
+
+#include "core/scratch_buffer.h"
+#include "lights/light.h"
+#include "materials/bsdf.h"
+#include "sampler/sampler.h"
+
+namespace caustica {
+
+class Scene;
+struct SurfaceInteraction;
+
+// Density (solid angle at ctx) with which sample_direct_lighting picks direction wi on light:
+// the light-selection probability times the light's own pdf.
+float light_pdf(const Scene &scene, const Light &light, const LightSampleContext &ctx, Vec3f wi);
+
+// One light sample, weighted against BSDF sampling with the power heuristic: the contribution
+// f * Le * |cos| / pdf, before the path throughput. Shadow rays are counted in rays.
+SampledSpectrum sample_direct_lighting(const Scene &scene, const SurfaceInteraction &si,
+                                       const BSDF &bsdf, const LightSampleContext &ctx,
+                                       const SampledWavelengths &lambda, Sampler &sampler,
+                                       uint64_t &rays, TransportMode mode = TransportMode::Radiance);
+
+} // namespace caustica

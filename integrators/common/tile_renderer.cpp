@@ -1,0 +1,122 @@
+#include "integrators/common/tile_renderer.h"
+
+#include "camera/camera.h"
+#include "film/film.h"
+#include "scene/scene.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <vector>
+
+namespace caustica {
+
+SampledWavelengths sample_wavelengths(const Scene &scene, float u) {
+    if (scene.overrides.wavelength > 0) return SampledWavelengths::fixed(scene.overrides.wavelength);
+    if (scene.overrides.single_wavelength) return SampledWavelengths::sample_single(u);
+    return SampledWavelengths::sample_visible(u);
+}
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct Tile {
+    Vec2i lo, hi;
+};
+
+struct ThreadState {
+    std::unique_ptr<Sampler> sampler;
+    ScratchBuffer scratch;
+    uint64_t rays = 0;
+    uint64_t non_finite = 0;
+};
+
+std::vector<Tile> make_tiles(Vec2i res) {
+    std::vector<Tile> tiles;
+    for (int y = 0; y < res.y; y += kTileSize)
+        for (int x = 0; x < res.x; x += kTileSize)
+            tiles.push_back({{x, y}, {std::min(x + kTileSize, res.x), std::min(y + kTileSize, res.y)}});
+    return tiles;
+}
+
+} // namespace
+
+void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                  const ProgressCallback &progress, const RadianceFunction &radiance) {
+    Film &film = *scene.film;
+    const std::vector<Tile> tiles = make_tiles(film.resolution());
+    const uint64_t pixel_count = uint64_t(film.resolution().x) * film.resolution().y;
+    const bool timed = budget.seconds > 0;
+    const int spp_cap = budget.spp > 0 ? budget.spp : (timed ? INT_MAX : 1);
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+
+    tbb::enumerable_thread_specific<ThreadState> states([&] {
+        ThreadState s;
+        s.sampler = scene.sampler->clone();
+        return s;
+    });
+
+    std::atomic<uint64_t> tiles_done{0};
+    int done = 0;
+    while (done < spp_cap) {
+        // A fixed budget renders all samples in one sweep (best locality); a time budget sweeps
+        // in waves sized from the measured cost per sample so the deadline is not overshot.
+        int wave = spp_cap - done;
+        if (timed) {
+            double per_spp = done > 0 ? elapsed() / done : 0;
+            double remaining = budget.seconds - elapsed();
+            wave = done == 0 ? 1 : int(std::clamp(remaining / std::max(per_spp, 1e-9), 1.0, 64.0));
+            wave = std::min(wave, spp_cap - done);
+        }
+        const int first = done;
+        tiles_done = 0;
+        tbb::parallel_for(size_t(0), tiles.size(), [&](size_t t) {
+            ThreadState &ts = states.local();
+            const Tile &tile = tiles[t];
+            for (int y = tile.lo.y; y < tile.hi.y; ++y)
+                for (int x = tile.lo.x; x < tile.hi.x; ++x) {
+                    Vec2i pixel{x, y};
+                    for (int s = first; s < first + wave; ++s) {
+                        Sampler &sampler = *ts.sampler;
+                        sampler.start_pixel_sample(pixel, s);
+                        SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
+                        CameraSample cs = get_camera_sample(sampler, pixel, film.filter());
+                        SampledSpectrum L;
+                        if (auto ray = scene.camera->generate_ray(cs, lambda)) {
+                            L = radiance(*ray, lambda, sampler, ts.scratch, ts.rays) * ray->weight;
+                            // A non-finite value is a bug to fix at its source; it is counted
+                            // (reported in the stats) and never reaches the film.
+                            if (L.has_non_finite()) {
+                                ++ts.non_finite;
+                                L = SampledSpectrum(0.f);
+                            }
+                        }
+                        film.add_sample(pixel, L, lambda, cs.filter_weight);
+                        ts.scratch.reset();
+                    }
+                }
+            uint64_t n = ++tiles_done;
+            if (progress)
+                progress(timed ? std::min(1.0, elapsed() / budget.seconds)
+                               : (double(first) + double(wave) * n / tiles.size()) / spp_cap,
+                         uint64_t(double(pixel_count) * (first + double(wave) * n / tiles.size())));
+        });
+        done += wave;
+        if (timed && elapsed() >= budget.seconds) break;
+    }
+    for (ThreadState &ts : states) {
+        stats.rays += ts.rays;
+        stats.non_finite_samples += ts.non_finite;
+    }
+    stats.samples_per_pixel = done;
+    stats.seconds = elapsed();
+}
+
+} // namespace caustica

@@ -1,0 +1,41 @@
+// The integrator interface and what all integrators report back.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace caustica {
+
+class Scene;
+
+// Budget for one render: a fixed sample count, or as many samples as fit in a time limit.
+struct RenderBudget {
+    int spp = 16;
+    double seconds = 0;   // > 0: render until this much wall time has passed (spp is then a cap)
+};
+
+struct RenderStats {
+    std::atomic<uint64_t> rays{0};              // camera, bounce and shadow rays traced
+    std::atomic<uint64_t> non_finite_samples{0};// caught, counted and dropped
+    int samples_per_pixel = 0;                  // completed for every pixel
+    double seconds = 0;
+};
+
+// Progress callback: fraction done in [0,1] and samples taken so far.
+using ProgressCallback = std::function<void(double fraction, uint64_t samples)>;
+
+class Integrator {
+  public:
+    virtual ~Integrator() = default;
+    // Renders into scene.film. Deterministic for a seed and sample count, whatever the threads.
+    virtual void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                        const ProgressCallback &progress) = 0;
+};
+
+// Creates the integrator named by scene.integrator_name; throws InputError for unknown names.
+std::unique_ptr<Integrator> create_integrator(const Scene &scene);
+
+} // namespace caustica

@@ -1,0 +1,14 @@
+#include "core/error.h"
+#include "integrators/integrator.h"
+#include "integrators/pt/path_tracer.h"
+#include "scene/scene.h"
+
+namespace caustica {
+
+std::unique_ptr<Integrator> create_integrator(const Scene &scene) {
+    if (scene.integrator_name == "pt") return std::make_unique<PathTracer>(scene.integrator_params);
+    throw InputError(scene.integrator_location,
+                     "integrator \"" + scene.integrator_name + "\" is not available in this build");
+}
+
+} // namespace caustica

@@ -1,0 +1,127 @@
+#include "integrators/pt/path_tracer.h"
+
+#include "core/sampling.h"
+#include "geometry/interaction.h"
+#include "integrators/common/light_sampling.h"
+#include "integrators/common/tile_renderer.h"
+#include "scene/scene.h"
+
+namespace caustica {
+
+PathTracer::PathTracer(const ParameterDictionary &params)
+    : max_depth_(params.get_one_int("maxdepth", 5)) {
+    if (max_depth_ < 0)
+        throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
+}
+
+namespace {
+
+struct PathState {
+    SampledSpectrum L{0.f}, beta{1.f};
+    // Product of eta^2 over refractions: Russian roulette looks at beta * eta_scale so that the
+    // radiance-mode 1/eta^2 factor does not end paths inside dense glass (pbrt-v4 14.1).
+    float eta_scale = 1;
+    bool specular_bounce = false;
+    float bsdf_pdf = 0;          // pdf of the last BSDF sample, for MIS on emitters hit
+    LightSampleContext prev_ctx; // where that sample was taken
+    const Material *absorbing_interior = nullptr;
+};
+
+SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWavelengths &lambda,
+                           Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
+    PathState st;
+    int depth = 0;
+    while (true) {
+        SurfaceInteraction si;
+        ++rays;
+        bool hit = scene.intersect(ray, &si);
+
+        // Beer-Lambert absorption along a segment inside an absorbing dielectric.
+        if (st.absorbing_interior) {
+            float dist = hit ? si.t * length(ray.d) : Infinity;
+            st.beta *= exp(-st.absorbing_interior->interior_sigma_a(lambda) * dist);
+            if (st.beta.is_black()) break;
+        }
+
+        if (!hit) {
+            for (const Light *light : scene.infinite_lights) {
+                SampledSpectrum Le = light->Le(ray, lambda);
+                if (Le.is_black()) continue;
+                float w = 1;
+                if (depth > 0 && !st.specular_bounce)
+                    w = power_heuristic(1, st.bsdf_pdf, 1, light_pdf(scene, *light, st.prev_ctx, ray.d));
+                st.L += st.beta * Le * w;
+            }
+            break;
+        }
+
+        if (si.area_light) {
+            SampledSpectrum Le = si.area_light->L(si.p, si.n, si.uv, si.wo, lambda);
+            if (!Le.is_black()) {
+                float w = 1;
+                if (depth > 0 && !st.specular_bounce)
+                    w = power_heuristic(1, st.bsdf_pdf, 1, light_pdf(scene, *si.area_light, st.prev_ctx, ray.d));
+                st.L += st.beta * Le * w;
+            }
+        }
+
+        if (!si.material) {
+            // A medium boundary without a surface: continue straight through.
+            ray = si.spawn_ray(ray.d);
+            continue;
+        }
+        if (depth++ == max_depth) break;
+
+        BSDF bsdf = si.material->get_bsdf(si, lambda, scratch);
+        if (!bsdf) {
+            ray = si.spawn_ray(ray.d);
+            continue;
+        }
+        const Vec3f wo = si.wo;
+        const LightSampleContext ctx{si.p, si.n, si.shading.n};
+
+        if (is_non_specular(bsdf.flags()))
+            st.L += st.beta * sample_direct_lighting(scene, si, bsdf, ctx, lambda, sampler, rays);
+
+        float u = sampler.get_1d();
+        auto bs = bsdf.sample_f(wo, u, sampler.get_2d(), TransportMode::Radiance);
+        if (!bs) break;
+        if (bs->dispersive && !lambda.secondary_terminated()) {
+            lambda.terminate_secondary();
+            for (int i = 1; i < NumWavelengths; ++i) st.beta[i] = 0;
+        }
+        st.beta *= bs->f * abs_dot(bs->wi, si.shading.n) / bs->pdf;
+        st.bsdf_pdf = bs->pdf_is_proportional ? bsdf.pdf(wo, bs->wi) : bs->pdf;
+        st.specular_bounce = bs->is_specular();
+        st.prev_ctx = ctx;
+        if (bs->is_transmission()) {
+            st.eta_scale *= sqr(bs->eta);
+            if (si.material->has_interior_absorption())
+                st.absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        }
+        ray = si.spawn_ray(bs->wi);
+
+        SampledSpectrum rr_beta = st.beta * st.eta_scale;
+        if (rr_beta.max_value() < 1 && depth > 1) {
+            float q = std::max(0.f, 1 - rr_beta.max_value());
+            if (sampler.get_1d() < q) break;
+            st.beta /= 1 - q;
+        }
+        if (st.beta.is_black()) break;
+    }
+    return st.L;
+}
+
+} // namespace
+
+void PathTracer::render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                        const ProgressCallback &progress) {
+    int max_depth = max_depth_;
+    render_tiles(scene, budget, stats, progress,
+                 [&scene, max_depth](const CameraRay &camera_ray, SampledWavelengths &lambda,
+                                     Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
+                     return trace_path(scene, max_depth, camera_ray.ray, lambda, sampler, scratch, rays);
+                 });
+}
+
+} // namespace caustica

@@ -1,0 +1,23 @@
+// Unidirectional path tracing with next-event estimation and multiple importance sampling
+// (Veach 1997, ch. 9: power heuristic between light sampling and BSDF sampling), Russian
+// roulette, and hero-wavelength termination at dispersive refraction.
+#pragma once
+
+#include "integrators/integrator.h"
+#include "params/parameters.h"
+
+namespace caustica {
+
+class PathTracer final : public Integrator {
+  public:
+    // Parameters (pbrt-v4 names): "maxdepth" (5), "regularize" is not supported.
+    explicit PathTracer(const ParameterDictionary &params);
+    void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                const ProgressCallback &progress) override;
+    int max_depth() const { return max_depth_; }
+
+  private:
+    int max_depth_;
+};
+
+} // namespace caustica

@@ -1,0 +1,29 @@
+// The subcommands of the `caustica` program. Each returns the process exit status:
+// 0 success, 1 runtime failure (e.g. an image could not be written), 2 bad input.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace caustica {
+
+struct RenderCommandOptions {
+    std::string scene_path;
+    std::string integrator;     // empty: the scene's Integrator directive
+    int spp = 0;                // 0: the scene's Sampler "pixelsamples"
+    double seconds = 0;         // > 0: render for this long instead of a sample count
+    int threads = 0;            // 0: all cores
+    uint64_t seed = 0;
+    std::string resolution;     // "WxH", empty: the scene's
+    std::string exr_path;       // empty: the Film "filename"
+    std::string png_path;       // empty: no PNG
+    std::string stats_json;     // empty: no statistics file
+    float wavelength = 0;       // > 0: monochromatic render at this wavelength in nm
+    bool single_wavelength = false;
+    bool quiet = false;
+};
+
+int run_render(const RenderCommandOptions &options);
+int run_info(const std::string &scene_path);
+
+} // namespace caustica

@@ -1,0 +1,35 @@
+#include "cli/commands.h"
+#include "parser/parser.h"
+#include "scene/scene.h"
+
+#include <cstdio>
+
+namespace caustica {
+
+int run_info(const std::string &scene_path) {
+    SceneDescription description = parse_scene_file(scene_path);
+    std::unique_ptr<Scene> scene = build_scene(description, RenderOverrides{});
+    const SceneFeatures &f = scene->features;
+    Vec2i res = scene->film->resolution();
+    auto yes_no = [](bool b) { return b ? "yes" : "no"; };
+    std::printf("scene:            %s\n", scene_path.c_str());
+    std::printf("resolution:       %d x %d\n", res.x, res.y);
+    std::printf("integrator:       %s\n", scene->integrator_name.c_str());
+    std::printf("samples/pixel:    %d\n", scene->sampler->samples_per_pixel());
+    std::printf("shapes:           %zu\n", scene->shape_count);
+    std::printf("triangles:        %zu\n", scene->triangle_count);
+    std::printf("instances:        %zu\n", scene->instance_count);
+    std::printf("lights:           %zu (%zu infinite)\n", scene->lights.size(), scene->infinite_lights.size());
+    std::printf("materials:        %zu\n", scene->material_count);
+    std::printf("textures:         %zu\n", scene->texture_count);
+    std::printf("media:            %zu\n", scene->medium_count);
+    std::printf("features:\n");
+    std::printf("  dispersive materials:      %s\n", yes_no(f.dispersive_materials));
+    std::printf("  delta-specular surfaces:   %s\n", yes_no(f.specular_surfaces));
+    std::printf("  absorbing interiors:       %s\n", yes_no(f.absorbing_interiors));
+    std::printf("  participating media:       %s\n", yes_no(f.media));
+    std::printf("  subsurface scattering:     %s\n", yes_no(f.subsurface));
+    return 0;
+}
+
+} // namespace caustica

@@ -1,0 +1,121 @@
+#include "cli/commands.h"
+#include "cli/progress_reporter.h"
+#include "core/error.h"
+#include "integrators/integrator.h"
+#include "parser/parser.h"
+#include "scene/scene.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <sys/resource.h>
+
+namespace caustica {
+
+namespace {
+
+bool ends_with(const std::string &s, const std::string &suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void parse_resolution(const std::string &text, int *w, int *h) {
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> *w >> x >> *h) || (x != 'x' && x != 'X') || !in.eof() || *w <= 0 || *h <= 0 ||
+        *w > 65536 || *h > 65536)
+        throw InputError("--resolution expects WxH with 1 <= W, H <= 65536, got \"" + text + "\"");
+}
+
+double peak_memory_mib() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0; // ru_maxrss is in KiB on Linux
+}
+
+void write_stats_json(const std::string &path, const Scene &scene, const RenderStats &stats, int threads) {
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error("cannot write statistics to \"" + path + "\"");
+    Vec2i res = scene.film->resolution();
+    double rays_per_second = stats.seconds > 0 ? stats.rays / stats.seconds : 0;
+    out << std::setprecision(10) << "{\n"
+        << "  \"integrator\": \"" << scene.integrator_name << "\",\n"
+        << "  \"resolution\": [" << res.x << ", " << res.y << "],\n"
+        << "  \"threads\": " << threads << ",\n"
+        << "  \"wall_seconds\": " << stats.seconds << ",\n"
+        << "  \"samples_per_pixel\": " << stats.samples_per_pixel << ",\n"
+        << "  \"rays\": " << stats.rays.load() << ",\n"
+        << "  \"rays_per_second\": " << rays_per_second << ",\n"
+        << "  \"non_finite_samples\": " << stats.non_finite_samples.load() << ",\n"
+        << "  \"peak_memory_mib\": " << peak_memory_mib() << "\n"
+        << "}\n";
+    if (!out) throw std::runtime_error("failed writing statistics to \"" + path + "\"");
+}
+
+} // namespace
+
+int run_render(const RenderCommandOptions &options) {
+    RenderOverrides overrides;
+    overrides.integrator = options.integrator;
+    overrides.spp = options.spp;
+    overrides.seed = options.seed;
+    overrides.wavelength = options.wavelength;
+    overrides.single_wavelength = options.single_wavelength;
+    if (!options.resolution.empty()) parse_resolution(options.resolution, &overrides.width, &overrides.height);
+    if (options.wavelength != 0 && (options.wavelength < LambdaMin || options.wavelength > LambdaMax))
+        throw InputError("--wavelength must lie in [360, 830] nm");
+
+    SceneDescription description = parse_scene_file(options.scene_path);
+    std::unique_ptr<Scene> scene = build_scene(description, overrides);
+    std::unique_ptr<Integrator> integrator = create_integrator(*scene);
+
+    std::string exr_path = options.exr_path.empty() ? scene->output_filename : options.exr_path;
+    std::string png_path = options.png_path;
+    if (ends_with(exr_path, ".png")) {
+        if (png_path.empty()) png_path = exr_path;
+        exr_path.clear();
+    } else if (!exr_path.empty() && !ends_with(exr_path, ".exr")) {
+        throw InputError("output \"" + exr_path + "\" must end in .exr or .png");
+    }
+
+    int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+    tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, threads);
+
+    RenderBudget budget;
+    budget.spp = scene->sampler->samples_per_pixel();
+    budget.seconds = options.seconds;
+    if (options.seconds > 0 && options.spp == 0) budget.spp = 0; // time alone decides
+
+    RenderStats stats;
+    ProgressReporter progress(!options.quiet);
+    integrator->render(*scene, budget, stats,
+                       [&progress](double fraction, uint64_t samples) { progress.update(fraction, samples); });
+    progress.finish();
+
+    Image image = scene->film->get_image(1.0);
+    std::map<std::string, std::string> metadata = {
+        {"caustica:integrator", scene->integrator_name},
+        {"caustica:spp", std::to_string(stats.samples_per_pixel)},
+        {"caustica:seed", std::to_string(options.seed)},
+        {"caustica:scene", options.scene_path},
+    };
+    if (!exr_path.empty()) write_exr(exr_path, image, metadata);
+    if (!png_path.empty()) write_png(png_path, image);
+    if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads);
+
+    if (!options.quiet) {
+        std::fprintf(stderr, "rendered %d spp in %.2fs, %.2fM rays/s, %llu non-finite samples dropped\n",
+                     stats.samples_per_pixel, stats.seconds,
+                     stats.seconds > 0 ? stats.rays / stats.seconds / 1e6 : 0.0,
+                     (unsigned long long)stats.non_finite_samples.load());
+        if (!exr_path.empty()) std::fprintf(stderr, "wrote %s\n", exr_path.c_str());
+        if (!png_path.empty()) std::fprintf(stderr, "wrote %s\n", png_path.c_str());
+    }
+    return 0;
+}
+
+} // namespace caustica

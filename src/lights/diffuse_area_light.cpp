@@ -1,0 +1,80 @@
+#include "lights/diffuse_area_light.h"
+
+#include "core/sampling.h"
+
+namespace caustica {
+
+DiffuseAreaLight::DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumPtr radiance,
+                                   float scale, bool two_sided)
+    : shape_(std::move(shape)), area_(shape_->area()), radiance_(std::move(radiance)),
+      scale_(scale), two_sided_(two_sided) {}
+
+SampledSpectrum DiffuseAreaLight::phi(const SampledWavelengths &lambda) const {
+    // Constant radiance integrated over the hemisphere (pi) and the area, per emitting side.
+    return Pi * (two_sided_ ? 2.f : 1.f) * area_ * scale_ * radiance_->sample(lambda);
+}
+
+SampledSpectrum DiffuseAreaLight::L(Vec3f, Vec3f n, Vec2f, Vec3f w,
+                                    const SampledWavelengths &lambda) const {
+    if (!two_sided_ && dot(n, w) < 0) return {};
+    return scale_ * radiance_->sample(lambda);
+}
+
+std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext &ctx, Vec2f u,
+                                                         const SampledWavelengths &lambda) const {
+    std::optional<ShapeSample> ss = shape_->sample(ctx.p, u);
+    if (!ss || !(ss->pdf > 0) || length_squared(ss->p - ctx.p) == 0) return {};
+    Vec3f wi = normalize(ss->p - ctx.p);
+    SampledSpectrum Le = L(ss->p, ss->n, ss->uv, -wi, lambda);
+    if (Le.is_black()) return {};
+    LightLiSample s;
+    s.L = Le;
+    s.wi = wi;
+    s.pdf = ss->pdf;
+    s.p_light = ss->p;
+    s.n_light = ss->n;
+    return s;
+}
+
+float DiffuseAreaLight::pdf_li(const LightSampleContext &ctx, Vec3f wi) const {
+    return shape_->pdf(ctx.p, wi);
+}
+
+std::optional<LightLeSample> DiffuseAreaLight::sample_le(Vec2f u1, Vec2f u2,
+                                                         const SampledWavelengths &lambda) const {
+    std::optional<ShapeSample> ss = shape_->sample(u1);
+    if (!ss || !(ss->pdf > 0)) return {};
+    // Cosine-weighted direction about the normal; two-sided lights first pick a side with equal
+    // probability, reusing u2.x rescaled to [0, 1).
+    Vec3f w;
+    float pdf_dir;
+    if (two_sided_) {
+        bool back = u2.x >= 0.5f;
+        u2.x = std::min(back ? (u2.x - 0.5f) * 2 : u2.x * 2, OneMinusEpsilon);
+        w = sample_cosine_hemisphere(u2);
+        if (back) w.z = -w.z;
+        pdf_dir = cosine_hemisphere_pdf(std::abs(w.z)) / 2;
+    } else {
+        w = sample_cosine_hemisphere(u2);
+        pdf_dir = cosine_hemisphere_pdf(w.z);
+    }
+    if (!(pdf_dir > 0)) return {};
+    w = Frame::from_z(ss->n).from_local(w);
+    LightLeSample s;
+    s.L = L(ss->p, ss->n, ss->uv, w, lambda);
+    s.ray = spawn_ray(ss->p, ss->n, w);
+    s.n = ss->n;
+    s.pdf_pos = ss->pdf;
+    s.pdf_dir = pdf_dir;
+    return s;
+}
+
+void DiffuseAreaLight::pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const {
+    // Shapes sample positions uniformly by area.
+    *pdf_pos = 1 / area_;
+    float cos_t = dot(n, normalize(ray.d));
+    *pdf_dir = two_sided_ ? cosine_hemisphere_pdf(std::abs(cos_t)) / 2
+                          : std::max(0.f, cosine_hemisphere_pdf(cos_t));
+}
+
+} // namespace caustica

@@ -1,0 +1,40 @@
+// Diffuse area light: constant radiance scale * L leaving every point of a shape, on the side of
+// its (oriented) normal, or on both sides when two-sided.
+#pragma once
+
+#include "geometry/shape.h"
+#include "lights/light.h"
+#include "spectral/spectrum.h"
+
+#include <memory>
+
+namespace caustica {
+
+class DiffuseAreaLight final : public Light {
+  public:
+    DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumPtr radiance, float scale,
+                     bool two_sided);
+
+    LightType type() const override { return LightType::Area; }
+    SampledSpectrum phi(const SampledWavelengths &lambda) const override;
+    std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
+                                           const SampledWavelengths &lambda) const override;
+    float pdf_li(const LightSampleContext &ctx, Vec3f wi) const override;
+    SampledSpectrum L(Vec3f p, Vec3f n, Vec2f uv, Vec3f w,
+                      const SampledWavelengths &lambda) const override;
+    std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2,
+                                           const SampledWavelengths &lambda) const override;
+    void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const override;
+
+    const Shape &shape() const { return *shape_; }
+    bool two_sided() const { return two_sided_; }
+
+  private:
+    std::shared_ptr<const Shape> shape_;
+    float area_;
+    SpectrumPtr radiance_;
+    float scale_;
+    bool two_sided_;
+};
+
+} // namespace caustica

@@ -1,0 +1,53 @@
+// Choosing one light for next-event estimation or for starting a light path.
+#pragma once
+
+#include "core/sampling.h"
+#include "lights/light.h"
+
+#include <unordered_map>
+#include <vector>
+
+namespace caustica {
+
+struct SampledLight {
+    const Light *light = nullptr; // null when there are no lights
+    float pmf = 0;
+};
+
+class LightSampler {
+  public:
+    virtual ~LightSampler() = default;
+    virtual SampledLight sample(float u) const = 0;
+    // Probability that sample() returns `light` (0 for a light it does not know).
+    virtual float pmf(const Light *light) const = 0;
+};
+
+// Every light equally likely.
+class UniformLightSampler final : public LightSampler {
+  public:
+    explicit UniformLightSampler(const std::vector<LightPtr> &lights);
+    SampledLight sample(float u) const override;
+    float pmf(const Light *light) const override;
+
+  private:
+    std::vector<const Light *> lights_;
+    std::unordered_map<const Light *, int> index_;
+};
+
+// Lights chosen in proportion to their emitted power (pbrt-v4's PowerLightSampler). Power is
+// phi() estimated over the visible range from four fixed wavelengths; lights are therefore to be
+// preprocessed (scene bounds known) before the sampler is built. If every light has zero power,
+// falls back to uniform selection.
+class PowerLightSampler final : public LightSampler {
+  public:
+    explicit PowerLightSampler(const std::vector<LightPtr> &lights);
+    SampledLight sample(float u) const override;
+    float pmf(const Light *light) const override;
+
+  private:
+    std::vector<const Light *> lights_;
+    std::unordered_map<const Light *, int> index_;
+    DiscreteDistribution distribution_;
+};
+
+} // namespace caustica

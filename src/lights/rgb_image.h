@@ -1,0 +1,22 @@
+// Linear RGB images for lights that read emission from a file (environment maps).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace caustica {
+
+struct RGBImage {
+    int width = 0, height = 0;
+    std::vector<float> pixels; // 3 floats per pixel, rows from the top of the image down
+
+    const float *at(int x, int y) const { return &pixels[3 * (size_t(y) * width + x)]; }
+    float *at(int x, int y) { return &pixels[3 * (size_t(y) * width + x)]; }
+};
+
+// Reads R, G and B with OpenImageIO as linear floats: integer-coded files (PNG, JPEG, ...) are
+// decoded from sRGB unless they declare themselves linear, as pbrt-v4 does. Throws
+// std::runtime_error with a reason (unreadable file, no R/G/B channels, NaN or infinite values).
+RGBImage read_rgb_image(const std::string &filename);
+
+} // namespace caustica

@@ -1,0 +1,49 @@
+// Spotlight: a point light whose intensity is scale * I inside a cone of half-angle
+// (coneangle - conedelta) around light-space +z, falling off smoothly (Hermite smoothstep in
+// cos theta, as pbrt-v4) to zero at coneangle.
+#pragma once
+
+#include "core/transform.h"
+#include "lights/light.h"
+#include "spectral/spectrum.h"
+
+namespace caustica {
+
+class SpotLight final : public Light {
+  public:
+    // Angles in degrees; falloff_start <= total_width.
+    SpotLight(const Transform &render_from_light, SpectrumPtr intensity, float scale,
+              float total_width_degrees, float falloff_start_degrees);
+
+    LightType type() const override { return LightType::DeltaPosition; }
+    SampledSpectrum phi(const SampledWavelengths &lambda) const override;
+    std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
+                                           const SampledWavelengths &lambda) const override;
+    float pdf_li(const LightSampleContext &ctx, Vec3f wi) const override;
+    std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2,
+                                           const SampledWavelengths &lambda) const override;
+    void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const override;
+
+    // Radiant intensity towards light-space direction w (unit).
+    SampledSpectrum intensity(Vec3f w_light, const SampledWavelengths &lambda) const;
+    Vec3f position() const { return position_; }
+
+  private:
+    // Probabilities (unnormalised) of sampling the full-intensity cone and the falloff ring:
+    // their solid-angle integrals of the angular profile divided by 2 pi.
+    float cone_weight() const { return 1 - cos_falloff_start_; }
+    float falloff_weight() const { return (cos_falloff_start_ - cos_falloff_end_) / 2; }
+
+    Transform render_from_light_, light_from_render_;
+    Vec3f position_;
+    SpectrumPtr intensity_;
+    float scale_;
+    float cos_falloff_end_, cos_falloff_start_;
+};
+
+// Hermite smoothstep of x between a and b, and its normalised density and sampling over [a, b].
+float smooth_step(float x, float a, float b);
+float smooth_step_pdf(float x, float a, float b);
+float sample_smooth_step(float u, float a, float b);
+
+} // namespace caustica

@@ -1,0 +1,62 @@
+#include "materials/conductor_bxdf.h"
+
+#include "materials/fresnel.h"
+
+namespace caustica {
+
+SampledSpectrum ConductorBxDF::f(Vec3f wo, Vec3f wi, TransportMode) const {
+    if (!same_hemisphere(wo, wi) || distribution_.effectively_smooth()) return {};
+    float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
+    if (cos_o == 0 || cos_i == 0) return {};
+    Vec3f wm = wi + wo;
+    if (length_squared(wm) == 0) return {};
+    wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
+    SampledSpectrum fresnel = fresnel_conductor(abs_dot(wo, wm), eta_, k_);
+    return fresnel * (distribution_.D(wm) * distribution_.G(wo, wi) / (4 * cos_o * cos_i));
+}
+
+std::optional<BSDFSample> ConductorBxDF::sample_f(Vec3f wo, float, Vec2f u, TransportMode,
+                                                  SampleFlags flags) const {
+    if (!allows(flags, SampleFlags::Reflection)) return {};
+    if (distribution_.effectively_smooth()) {
+        // Mirror reflection: the delta distribution's f / pdf is F / |cos|.
+        Vec3f wi(-wo.x, -wo.y, wo.z);
+        float cos_i = std::abs(wi.z);
+        if (cos_i == 0) return {};
+        BSDFSample s;
+        s.f = fresnel_conductor(cos_i, eta_, k_) / cos_i;
+        s.wi = wi;
+        s.pdf = 1;
+        s.flags = BxDFSpecularReflection;
+        return s;
+    }
+    if (wo.z == 0) return {};
+    Vec3f wm = distribution_.sample_wm(wo, u);
+    Vec3f wi = reflect(wo, wm);
+    // Reflections off visible facets can still leave below the horizon: those are masked by
+    // the shadowing term, which the pdf of the surviving directions does not renormalise.
+    if (!same_hemisphere(wo, wi)) return {};
+    float pdf = distribution_.pdf(wo, wm) / (4 * abs_dot(wo, wm));
+    float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
+    if (cos_i == 0 || pdf == 0) return {};
+    BSDFSample s;
+    s.f = fresnel_conductor(abs_dot(wo, wm), eta_, k_) *
+          (distribution_.D(wm) * distribution_.G(wo, wi) / (4 * cos_o * cos_i));
+    s.wi = wi;
+    s.pdf = pdf;
+    s.flags = BxDFGlossyReflection;
+    return s;
+}
+
+float ConductorBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) const {
+    if (!allows(flags, SampleFlags::Reflection) || !same_hemisphere(wo, wi) ||
+        distribution_.effectively_smooth())
+        return 0;
+    Vec3f wm = wo + wi;
+    if (length_squared(wm) == 0) return 0;
+    wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
+    // Jacobian of the reflection half-vector map: d(wm)/d(wi) = 1 / (4 |wo.wm|).
+    return distribution_.pdf(wo, wm) / (4 * abs_dot(wo, wm));
+}
+
+} // namespace caustica

@@ -1,0 +1,199 @@
+#include "materials/dielectric_bxdf.h"
+
+#include "materials/fresnel.h"
+
+namespace caustica {
+
+namespace {
+
+// Probabilities of choosing reflection and transmission given the hero's Fresnel reflectance,
+// restricted to the lobes the caller allows.
+struct LobeChoice {
+    float pr, pt;
+    bool empty() const { return pr == 0 && pt == 0; }
+    float reflection_probability() const { return pr / (pr + pt); }
+    float transmission_probability() const { return pt / (pr + pt); }
+};
+LobeChoice choose_lobes(float reflectance, SampleFlags flags) {
+    return {allows(flags, SampleFlags::Reflection) ? reflectance : 0.f,
+            allows(flags, SampleFlags::Transmission) ? 1 - reflectance : 0.f};
+}
+
+// eta' of the side wi is on over the side wo is on, for a transmission with wo on the given side.
+float relative_eta(float cos_o, float eta) { return cos_o > 0 ? eta : 1 / eta; }
+
+} // namespace
+
+DielectricBxDF::DielectricBxDF(const SampledSpectrum &eta,
+                               const TrowbridgeReitzDistribution &distribution)
+    : eta_(eta), distribution_(distribution) {
+    index_matched_ = true;
+    for (int i = 0; i < NumWavelengths; ++i) {
+        if (eta_[i] != eta_[0]) dispersive_ = true;
+        if (!(std::abs(eta_[i] - 1) < IndexMatchedTolerance)) index_matched_ = false;
+    }
+}
+
+BxDFFlags DielectricBxDF::flags() const {
+    if (index_matched_) return BxDFSpecularTransmission;
+    BxDFFlags lobe = distribution_.effectively_smooth() ? BxDFSpecular : BxDFGlossy;
+    return BxDFReflection | BxDFTransmission | lobe;
+}
+
+std::optional<BSDFSample> DielectricBxDF::sample_f(Vec3f wo, float uc, Vec2f u,
+                                                   TransportMode mode, SampleFlags flags) const {
+    if (wo.z == 0) return {};
+    if (index_matched_) {
+        // The interface is invisible: the delta transmission continues the ray unchanged, with
+        // unit throughput in either transport mode (eta' = 1).
+        if (!allows(flags, SampleFlags::Transmission)) return {};
+        BSDFSample s;
+        s.wi = -wo;
+        s.f = SampledSpectrum(1 / std::abs(wo.z));
+        s.pdf = 1;
+        s.flags = BxDFSpecularTransmission;
+        return s;
+    }
+    if (distribution_.effectively_smooth()) return sample_specular(wo, uc, mode, flags);
+    return sample_rough(wo, uc, u, mode, flags);
+}
+
+std::optional<BSDFSample> DielectricBxDF::sample_specular(Vec3f wo, float uc, TransportMode mode,
+                                                          SampleFlags flags) const {
+    float cos_o = wo.z;
+    LobeChoice lobes = choose_lobes(fresnel_dielectric(cos_o, eta_[0]), flags);
+    if (lobes.empty()) return {};
+    BSDFSample s;
+    if (uc < lobes.reflection_probability()) {
+        // Mirror reflection; every wavelength reflects the same way with its own Fresnel weight.
+        s.wi = Vec3f(-wo.x, -wo.y, wo.z);
+        for (int i = 0; i < NumWavelengths; ++i)
+            s.f[i] = fresnel_dielectric(cos_o, eta_[i]) / std::abs(cos_o);
+        s.pdf = lobes.reflection_probability();
+        s.flags = BxDFSpecularReflection;
+        return s;
+    }
+    float etap;
+    if (!refract(wo, Vec3f(0, 0, 1), eta_[0], &etap, &s.wi)) return {};
+    float cos_i = std::abs(s.wi.z);
+    if (cos_i == 0) return {};
+    int lanes = dispersive_ ? 1 : NumWavelengths;
+    for (int i = 0; i < lanes; ++i) {
+        float t = 1 - fresnel_dielectric(cos_o, eta_[i]);
+        if (mode == TransportMode::Radiance) t /= sqr(relative_eta(cos_o, eta_[i]));
+        s.f[i] = t / cos_i;
+    }
+    s.pdf = lobes.transmission_probability();
+    s.flags = BxDFSpecularTransmission;
+    s.eta = etap;
+    s.dispersive = dispersive_;
+    return s;
+}
+
+std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f u,
+                                                       TransportMode mode, SampleFlags flags) const {
+    Vec3f wm = distribution_.sample_wm(wo, u);
+    float wo_dot_m = dot(wo, wm);
+    LobeChoice lobes = choose_lobes(fresnel_dielectric(wo_dot_m, eta_[0]), flags);
+    if (lobes.empty()) return {};
+    float cos_o = std::abs(wo.z);
+    BSDFSample s;
+    if (uc < lobes.reflection_probability()) {
+        s.wi = reflect(wo, wm);
+        if (!same_hemisphere(wo, s.wi) || s.wi.z == 0) return {};
+        float cos_i = std::abs(s.wi.z);
+        float common = distribution_.D(wm) * distribution_.G(wo, s.wi) / (4 * cos_i * cos_o);
+        for (int i = 0; i < NumWavelengths; ++i)
+            s.f[i] = fresnel_dielectric(wo_dot_m, eta_[i]) * common;
+        s.pdf = distribution_.pdf(wo, wm) / (4 * std::abs(wo_dot_m)) * lobes.reflection_probability();
+        s.flags = BxDFGlossyReflection;
+        return s;
+    }
+    float etap;
+    if (!refract(wo, wm, eta_[0], &etap, &s.wi)) return {};
+    if (same_hemisphere(wo, s.wi) || s.wi.z == 0) return {};
+    float cos_i = std::abs(s.wi.z);
+    float wi_dot_m = dot(s.wi, wm);
+    // Jacobian of the refraction half-vector map (Walter et al. 2007, eq. 17).
+    float denom = sqr(wi_dot_m + wo_dot_m / etap);
+    if (denom == 0) return {};
+    s.pdf = distribution_.pdf(wo, wm) * std::abs(wi_dot_m) / denom * lobes.transmission_probability();
+    s.flags = BxDFGlossyTransmission;
+    s.eta = etap;
+    if (!dispersive_) {
+        float t = (1 - fresnel_dielectric(wo_dot_m, eta_[0])) * distribution_.D(wm) *
+                  distribution_.G(wo, s.wi) * std::abs(wi_dot_m * wo_dot_m / (cos_i * cos_o * denom));
+        if (mode == TransportMode::Radiance) t /= sqr(etap);
+        s.f = SampledSpectrum(t);
+    } else if (std::max(distribution_.alpha_x(), distribution_.alpha_y()) < DispersiveAlphaThreshold) {
+        s.f[0] = rough_transmission(wo, s.wi, eta_[0], mode);
+        s.dispersive = true;
+    } else {
+        for (int i = 0; i < NumWavelengths; ++i) s.f[i] = rough_transmission(wo, s.wi, eta_[i], mode);
+    }
+    return s;
+}
+
+float DielectricBxDF::rough_transmission(Vec3f wo, Vec3f wi, float eta, TransportMode mode) const {
+    float cos_o = wo.z, cos_i = wi.z;
+    float etap = relative_eta(cos_o, eta);
+    // Generalised half vector (Walter et al. 2007, eq. 16), oriented to the outside.
+    Vec3f wm = wi * etap + wo;
+    if (length_squared(wm) == 0) return 0;
+    wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
+    float wo_dot_m = dot(wo, wm), wi_dot_m = dot(wi, wm);
+    // Microfacets must face each direction from that direction's side.
+    if (wi_dot_m * cos_i < 0 || wo_dot_m * cos_o < 0) return 0;
+    float denom = sqr(wi_dot_m + wo_dot_m / etap);
+    if (denom == 0) return 0;
+    float t = (1 - fresnel_dielectric(wo_dot_m, eta)) * distribution_.D(wm) * distribution_.G(wo, wi) *
+              std::abs(wi_dot_m * wo_dot_m / (cos_i * cos_o * denom));
+    if (mode == TransportMode::Radiance) t /= sqr(etap);
+    return t;
+}
+
+SampledSpectrum DielectricBxDF::f(Vec3f wo, Vec3f wi, TransportMode mode) const {
+    if (specular()) return {};
+    float cos_o = wo.z, cos_i = wi.z;
+    if (cos_o == 0 || cos_i == 0) return {};
+    SampledSpectrum result;
+    if (cos_o * cos_i > 0) {
+        Vec3f wm = wi + wo;
+        if (length_squared(wm) == 0) return {};
+        wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
+        float wo_dot_m = dot(wo, wm);
+        if (dot(wi, wm) * cos_i < 0 || wo_dot_m * cos_o < 0) return {};
+        float common = distribution_.D(wm) * distribution_.G(wo, wi) / std::abs(4 * cos_i * cos_o);
+        for (int i = 0; i < NumWavelengths; ++i)
+            result[i] = fresnel_dielectric(wo_dot_m, eta_[i]) * common;
+        return result;
+    }
+    if (!dispersive_) return SampledSpectrum(rough_transmission(wo, wi, eta_[0], mode));
+    for (int i = 0; i < NumWavelengths; ++i) result[i] = rough_transmission(wo, wi, eta_[i], mode);
+    return result;
+}
+
+float DielectricBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) const {
+    if (specular()) return 0;
+    float cos_o = wo.z, cos_i = wi.z;
+    if (cos_o == 0 || cos_i == 0) return 0;
+    bool reflection = cos_o * cos_i > 0;
+    float etap = reflection ? 1 : relative_eta(cos_o, eta_[0]);
+    Vec3f wm = wi * etap + wo;
+    if (length_squared(wm) == 0) return 0;
+    wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
+    float wo_dot_m = dot(wo, wm), wi_dot_m = dot(wi, wm);
+    if (wi_dot_m * cos_i < 0 || wo_dot_m * cos_o < 0) return 0;
+    LobeChoice lobes = choose_lobes(fresnel_dielectric(wo_dot_m, eta_[0]), flags);
+    if (lobes.empty()) return 0;
+    if (reflection) {
+        if (lobes.pr == 0) return 0;
+        return distribution_.pdf(wo, wm) / (4 * std::abs(wo_dot_m)) * lobes.reflection_probability();
+    }
+    if (lobes.pt == 0) return 0;
+    float denom = sqr(wi_dot_m + wo_dot_m / etap);
+    if (denom == 0) return 0;
+    return distribution_.pdf(wo, wm) * std::abs(wi_dot_m) / denom * lobes.transmission_probability();
+}
+
+} // namespace caustica

@@ -1,0 +1,66 @@
+// A thin dielectric slab (a window pane, a soap film without interference), as pbrt-v4's
+// ThinDielectricBxDF: light reflects inside the slab any number of times between two parallel
+// smooth interfaces, and leaves either mirrored or undeviated. Summing the geometric series of
+// internal bounces with single-interface reflectance R gives total reflectance
+// R' = R + T^2 R / (1 - R^2) and transmittance T' = 1 - R' (no absorption).
+//
+// Both exit directions are the same for every wavelength, so a dispersive eta only changes the
+// per-wavelength weights and never sets BSDFSample::dispersive. The light leaves into the medium
+// it came from, so there is no radiance compression and the two transport modes agree.
+#pragma once
+
+#include "materials/bxdf.h"
+#include "materials/fresnel.h"
+
+namespace caustica {
+
+class ThinDielectricBxDF final : public BxDF {
+  public:
+    explicit ThinDielectricBxDF(const SampledSpectrum &eta) : eta_(eta) {}
+
+    SampledSpectrum f(Vec3f, Vec3f, TransportMode) const override { return {}; }
+    float pdf(Vec3f, Vec3f, TransportMode, SampleFlags = SampleFlags::All) const override { return 0; }
+    BxDFFlags flags() const override { return BxDFReflection | BxDFTransmission | BxDFSpecular; }
+
+    // Total reflectance of the slab per wavelength for light with cosine cos_o.
+    SampledSpectrum reflectance(float cos_o) const {
+        SampledSpectrum r;
+        for (int i = 0; i < NumWavelengths; ++i) {
+            float single = fresnel_dielectric(std::abs(cos_o), eta_[i]);
+            float t = 1 - single;
+            r[i] = single < 1 ? single + sqr(t) * single / (1 - sqr(single)) : 1;
+        }
+        return r;
+    }
+
+    std::optional<BSDFSample> sample_f(Vec3f wo, float uc, Vec2f, TransportMode,
+                                       SampleFlags flags = SampleFlags::All) const override {
+        float cos_o = std::abs(wo.z);
+        if (cos_o == 0) return {};
+        SampledSpectrum r = reflectance(cos_o);
+        SampledSpectrum t = SampledSpectrum(1) - r;
+        // Lobe choice by the average over wavelengths: every lane's weight f / pdf then stays
+        // near 1, which keeps the secondary wavelengths' variance low.
+        float pr = allows(flags, SampleFlags::Reflection) ? r.average() : 0;
+        float pt = allows(flags, SampleFlags::Transmission) ? t.average() : 0;
+        if (pr == 0 && pt == 0) return {};
+        BSDFSample s;
+        if (uc < pr / (pr + pt)) {
+            s.wi = Vec3f(-wo.x, -wo.y, wo.z);
+            s.f = r / cos_o;
+            s.pdf = pr / (pr + pt);
+            s.flags = BxDFSpecularReflection;
+        } else {
+            s.wi = -wo;
+            s.f = t / cos_o;
+            s.pdf = pt / (pr + pt);
+            s.flags = BxDFSpecularTransmission;
+        }
+        return s;
+    }
+
+  private:
+    SampledSpectrum eta_;
+};
+
+} // namespace caustica

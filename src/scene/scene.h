@@ -1,0 +1,80 @@
+// A scene ready to render: camera, film, sampler, geometry, lights and materials, built once from
+// a parsed scene description and then shared read-only by all render threads.
+#pragma once
+
+#include "camera/camera.h"
+#include "film/film.h"
+#include "film/filter.h"
+#include "geometry/embree_scene.h"
+#include "geometry/shape_factory.h"
+#include "lights/light.h"
+#include "lights/light_sampler.h"
+#include "materials/material.h"
+#include "params/parameters.h"
+#include "sampler/sampler.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace caustica {
+
+struct SceneDescription;
+
+// What the scene contains, derived once so integrators can skip what it does not need.
+struct SceneFeatures {
+    bool dispersive_materials = false;   // some dielectric's IOR varies with wavelength
+    bool specular_surfaces = false;      // delta lobes: caustic (S-D-S) paths are possible
+    bool media = false;
+    bool subsurface = false;
+    bool visible_emitters = false;       // area or infinite lights the camera can see
+    bool absorbing_interiors = false;
+    bool all_spectra_constant = false;
+};
+
+// Command-line choices that override the scene file.
+struct RenderOverrides {
+    std::string integrator;     // empty: the scene's
+    int spp = 0;                // 0: the scene's
+    int width = 0, height = 0;  // 0: the scene's
+    uint64_t seed = 0;
+    float wavelength = 0;       // > 0: monochromatic rendering at this wavelength (nm)
+    bool single_wavelength = false; // one wavelength per path instead of hero sampling
+};
+
+class Scene {
+  public:
+    CameraPtr camera;
+    std::unique_ptr<Film> film;
+    std::unique_ptr<Sampler> sampler;
+    GeometryScene geometry;
+    std::vector<LightPtr> lights;
+    std::vector<const Light *> infinite_lights;
+    std::unique_ptr<PowerLightSampler> light_sampler;
+
+    std::string integrator_name;         // Caustica's name: "pt", "lt", ...
+    ParameterDictionary integrator_params;
+    SourceLocation integrator_location;
+    std::string output_filename;         // Film "filename"
+    SceneFeatures features;
+    RenderOverrides overrides;
+
+    // Scene statistics for `caustica info`.
+    size_t shape_count = 0, triangle_count = 0, material_count = 0, medium_count = 0,
+           instance_count = 0, texture_count = 0;
+
+    bool intersect(const Ray &ray, SurfaceInteraction *si) const { return geometry.intersect(ray, si); }
+    bool occluded(const Ray &ray) const { return geometry.occluded(ray); }
+
+    // Keeps what the lights and primitives point to alive for the scene's lifetime.
+    std::vector<MaterialPtr> materials;
+    std::vector<std::shared_ptr<const ShapeGroup>> shape_groups;
+};
+
+// Maps the pbrt-v4 integrator names onto Caustica's; empty when unknown.
+std::string caustica_integrator_name(const std::string &pbrt_name);
+
+// Builds the scene; throws InputError for anything the description gets wrong.
+std::unique_ptr<Scene> build_scene(const SceneDescription &description, const RenderOverrides &overrides);
+
+} // namespace caustica

@@ -1,0 +1,219 @@
+// Turns a parsed scene description into renderable objects, resolving names (textures,
+// materials, instances) in declaration order and reporting errors at their source locations.
+#include "camera/camera_factory.h"
+#include "core/error.h"
+#include "film/film.h"
+#include "film/filter.h"
+#include "lights/light_factory.h"
+#include "materials/material_factory.h"
+#include "parser/scene_description.h"
+#include "sampler/sampler_factory.h"
+#include "scene/scene.h"
+#include "textures/texture_factory.h"
+
+#include <map>
+#include <set>
+
+namespace caustica {
+
+std::string caustica_integrator_name(const std::string &name) {
+    static const std::map<std::string, std::string> names = {
+        {"pt", "pt"},     {"path", "pt"},   {"volpath", "pt"}, {"lt", "lt"},
+        {"lightpath", "lt"}, {"bdpt", "bdpt"}, {"sppm", "sppm"}, {"bpm", "bpm"}, {"vcm", "vcm"},
+    };
+    auto it = names.find(name);
+    return it == names.end() ? std::string() : it->second;
+}
+
+namespace {
+
+// Integrators this build can run; the others arrive with the bidirectional work.
+const std::set<std::string> available_integrators = {"pt"};
+
+void choose_integrator(const SceneDescription &d, const RenderOverrides &ov, Scene &scene) {
+    scene.integrator_params = d.integrator.params;
+    scene.integrator_location = d.integrator.loc;
+    if (!ov.integrator.empty()) {
+        std::string name = caustica_integrator_name(ov.integrator);
+        if (name.empty() || !available_integrators.count(name))
+            throw InputError("--integrator: \"" + ov.integrator + "\" is not an available integrator (available: pt)");
+        scene.integrator_name = name;
+        return;
+    }
+    std::string pbrt_name = d.integrator.type.empty() ? "volpath" : d.integrator.type;
+    std::string name = caustica_integrator_name(pbrt_name);
+    if (name.empty() || !available_integrators.count(name)) {
+        warning(d.integrator.loc, "integrator \"" + pbrt_name +
+                                      "\" is not supported yet; rendering with the path tracer (pt)");
+        name = "pt";
+    }
+    scene.integrator_name = name;
+}
+
+void create_textures(const SceneDescription &d, NamedTextures &textures) {
+    for (const TextureEntity &t : d.textures) {
+        if (t.texture_class == "float") {
+            textures.float_textures[t.name] =
+                create_float_texture(t.type, t.render_from_object, t.params, textures, t.loc);
+            continue;
+        }
+        // An RGB texel means a different spectrum as a reflectance, an unbounded quantity or an
+        // emission; like pbrt-v4, keep one texture per use. Reflectance is only defined for
+        // values in [0, 1]: a texture outside that range is simply not usable as one.
+        try {
+            textures.albedo[t.name] = create_spectrum_texture(t.type, t.render_from_object, t.params,
+                                                              SpectrumType::Albedo, textures, t.loc);
+        } catch (const InputError &) {
+        }
+        textures.unbounded[t.name] = create_spectrum_texture(t.type, t.render_from_object, t.params,
+                                                             SpectrumType::Unbounded, textures, t.loc);
+        textures.illuminant[t.name] = create_spectrum_texture(t.type, t.render_from_object, t.params,
+                                                              SpectrumType::Illuminant, textures, t.loc);
+    }
+}
+
+struct MaterialTable {
+    std::vector<MaterialPtr> anonymous;
+    std::map<std::string, MaterialPtr> named;
+};
+
+MaterialTable create_materials(const SceneDescription &d, const NamedTextures &textures, Scene &scene) {
+    MaterialTable table;
+    for (const auto &[name, entity] : d.named_materials) {
+        table.named[name] = create_material(entity.type, entity.params, textures, entity.loc);
+        if (table.named[name]) scene.materials.push_back(table.named[name]);
+    }
+    for (const SceneEntity &m : d.materials) {
+        table.anonymous.push_back(create_material(m.type, m.params, textures, m.loc));
+        if (table.anonymous.back()) scene.materials.push_back(table.anonymous.back());
+    }
+    scene.material_count = d.named_materials.size() + d.materials.size();
+    return table;
+}
+
+const Material *material_for(const ShapeEntity &s, const MaterialTable &table) {
+    if (!s.material_name.empty()) {
+        auto it = table.named.find(s.material_name);
+        if (it == table.named.end())
+            throw InputError(s.loc, "named material \"" + s.material_name + "\" is not defined");
+        return it->second.get();
+    }
+    if (s.material_index >= 0) return table.anonymous.at(s.material_index).get();
+    // pbrt-v4's default material: diffuse with reflectance 0.5.
+    static const MaterialPtr default_material = [] {
+        ParameterDictionary none;
+        return create_material("diffuse", none, NamedTextures{}, SourceLocation{});
+    }();
+    return default_material.get();
+}
+
+void add_shapes(const SceneDescription &d, const MaterialTable &materials, Scene &scene) {
+    for (const ShapeEntity &s : d.shapes) {
+        auto group = create_shape(s.type, s.render_from_object, s.reverse_orientation, s.params, s.loc);
+        if (!group) continue;
+        PrimitiveAttributes attrs;
+        attrs.material = material_for(s, materials);
+        if (s.area_light_index >= 0) {
+            const SceneEntity &area = d.area_lights.at(s.area_light_index);
+            for (LightPtr &light : create_area_lights(area.type, area.params, group->shapes(), area.loc)) {
+                attrs.area_lights.push_back(light.get());
+                scene.lights.push_back(std::move(light));
+            }
+        }
+        scene.shape_count += 1;
+        scene.triangle_count += group->triangle_count();
+        scene.geometry.add(group, std::move(attrs));
+        scene.shape_groups.push_back(std::move(group));
+    }
+}
+
+void add_instances(const SceneDescription &d, const MaterialTable &materials, Scene &scene) {
+    std::map<std::string, int> prototypes;
+    for (const InstanceDefinition &def : d.instances) {
+        std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> members;
+        for (const ShapeEntity &s : def.shapes) {
+            auto group = create_shape(s.type, s.render_from_object, s.reverse_orientation, s.params, s.loc);
+            if (!group) continue;
+            if (s.area_light_index >= 0)
+                warning(s.loc, "area lights inside object instances are not supported; the shape "
+                               "is instanced without emission");
+            PrimitiveAttributes attrs;
+            attrs.material = material_for(s, materials);
+            scene.triangle_count += group->triangle_count();
+            scene.shape_groups.push_back(group);
+            members.emplace_back(std::move(group), std::move(attrs));
+        }
+        prototypes[def.name] = scene.geometry.add_prototype(std::move(members));
+    }
+    for (const InstanceUse &use : d.instance_uses) {
+        auto it = prototypes.find(use.name);
+        if (it == prototypes.end())
+            throw InputError(use.loc, "object instance \"" + use.name + "\" is not defined");
+        scene.geometry.add_instance(it->second, use.render_from_instance);
+        ++scene.instance_count;
+    }
+}
+
+void add_lights(const SceneDescription &d, Scene &scene) {
+    for (const LightEntity &l : d.lights) {
+        LightPtr light = create_light(l.type, l.render_from_object, l.params, l.loc);
+        if (light) scene.lights.push_back(std::move(light));
+    }
+    for (const LightPtr &light : scene.lights)
+        if (light->type() == LightType::Infinite) scene.infinite_lights.push_back(light.get());
+}
+
+void analyse_features(const SceneDescription &d, Scene &scene) {
+    SceneFeatures &f = scene.features;
+    for (const MaterialPtr &m : scene.materials) {
+        f.dispersive_materials |= m->is_dispersive();
+        f.specular_surfaces |= m->has_specular_lobe();
+        f.subsurface |= m->has_subsurface();
+        f.absorbing_interiors |= m->has_interior_absorption();
+    }
+    f.media = !d.media.empty();
+    f.visible_emitters = !scene.lights.empty();
+}
+
+} // namespace
+
+std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverrides &ov) {
+    auto scene = std::make_unique<Scene>();
+    scene->overrides = ov;
+    choose_integrator(d, ov, *scene);
+
+    std::unique_ptr<Filter> filter =
+        create_filter(d.filter.type.empty() ? "gaussian" : d.filter.type, d.filter.params, d.filter.loc);
+    scene->film = create_film(d.film.type.empty() ? "rgb" : d.film.type, d.film.params, d.color_space,
+                              std::move(filter), d.film.loc, Vec2i{ov.width, ov.height});
+    scene->film->set_monochromatic(ov.wavelength > 0);
+    scene->output_filename = scene->film->filename();
+
+    if (!d.has_camera) throw InputError(SourceLocation{}, "the scene has no Camera directive");
+    scene->camera = create_camera(d.camera.type, d.camera.world_from_camera, scene->film->resolution(),
+                                  d.camera.params, d.camera.loc);
+    scene->sampler = create_sampler(d.sampler.type.empty() ? "zsobol" : d.sampler.type, d.sampler.params,
+                                    d.sampler.loc, int(ov.seed), ov.spp);
+
+    NamedTextures textures;
+    create_textures(d, textures);
+    scene->texture_count = d.textures.size();
+    MaterialTable materials = create_materials(d, textures, *scene);
+    add_shapes(d, materials, *scene);
+    add_instances(d, materials, *scene);
+    add_lights(d, *scene);
+    if (!d.media.empty()) {
+        scene->medium_count = d.media.size();
+        warning(d.media.front().loc, "participating media are parsed but not rendered yet; "
+                                     "media are ignored");
+    }
+
+    scene->geometry.commit();
+    Bounds3f bounds = scene->geometry.bounds();
+    for (const LightPtr &light : scene->lights) light->preprocess(bounds);
+    scene->light_sampler = std::make_unique<PowerLightSampler>(scene->lights);
+    analyse_features(d, *scene);
+    return scene;
+}
+
+} // namespace caustica

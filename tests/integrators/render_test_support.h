@@ -1,0 +1,73 @@
+// Helpers for whole-renderer tests: run the caustica command and read the images it writes.
+#pragma once
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace caustica::testing {
+
+struct RgbImage {
+    int width = 0, height = 0;
+    std::vector<float> rgb; // interleaved, row-major, top row first
+    float at(int x, int y, int c) const { return rgb[(size_t(y) * width + x) * 3 + c]; }
+};
+
+inline RgbImage read_rgb(const std::string &path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    const OIIO::ImageSpec &spec = in->spec();
+    RgbImage img;
+    img.width = spec.width;
+    img.height = spec.height;
+    img.rgb.resize(size_t(spec.width) * spec.height * 3);
+    if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, img.rgb.data()))
+        throw std::runtime_error("cannot read " + path);
+    return img;
+}
+
+inline std::string data_path(const std::string &relative) {
+    return std::string(CAUSTICA_TEST_DATA) + "/" + relative;
+}
+
+// A fresh directory under the build tree for one test's outputs.
+inline std::string scratch_dir(const std::string &name) {
+    auto dir = std::filesystem::temp_directory_path() / ("caustica-test-" + name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+// Runs `caustica ARGS`, returns its exit status; stderr goes to stderr_path when given.
+inline int run_caustica(const std::string &args, const std::string &stderr_path = "") {
+    std::string cmd = std::string(CAUSTICA_BINARY) + " " + args + " > /dev/null";
+    cmd += stderr_path.empty() ? " 2>/dev/null" : " 2>" + stderr_path;
+    int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+inline std::string read_text(const std::string &path) {
+    std::FILE *f = std::fopen(path.c_str(), "rb");
+    if (!f) return {};
+    std::string s;
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
+    std::fclose(f);
+    return s;
+}
+
+// Mean of channel c over the block [x0, x0+size) x [y0, y0+size).
+inline double block_mean(const RgbImage &img, int x0, int y0, int size, int c) {
+    double sum = 0;
+    for (int y = y0; y < y0 + size; ++y)
+        for (int x = x0; x < x0 + size; ++x) sum += img.at(x, y, c);
+    return sum / (size * size);
+}
+
+} // namespace caustica::testing
