@@ -3,6 +3,7 @@
 
 #include "spectral/sampled_wavelengths.h"
 
+#include <cmath>
 #include <memory>
 #include <span>
 #include <vector>
@@ -42,6 +43,7 @@ class ConstantSpectrum final : public Spectrum {
 // Linear interpolation between (lambda, value) pairs, zero outside their range.
 class PiecewiseLinearSpectrum final : public Spectrum {
   public:
+    // lambdas strictly increasing, as many as values; throws std::invalid_argument otherwise.
     PiecewiseLinearSpectrum(std::span<const float> lambdas, std::span<const float> values);
     // From interleaved pairs; if normalize, scaled so that its CIE Y integral equals CIE_Y_integral
     // (how pbrt normalises illuminant spectra).
@@ -56,17 +58,30 @@ class PiecewiseLinearSpectrum final : public Spectrum {
 };
 
 // Tabulated at every integer nm in [LambdaMin, LambdaMax]: fast lookups for CMFs and illuminants.
+// A wavelength reads the sample at the nearest integer nm (as pbrt-v4 does), zero outside.
 class DenselySampledSpectrum final : public Spectrum {
   public:
     explicit DenselySampledSpectrum(const Spectrum &s);
-    float operator()(float lambda) const override;
+    float operator()(float lambda) const override { return lookup(lambda); }
+    SampledSpectrum sample(const SampledWavelengths &lambda) const override {
+        SampledSpectrum s;
+        for (int i = 0; i < NumWavelengths; ++i) s[i] = lookup(lambda[i]);
+        return s;
+    }
     float max_value() const override;
+    void scale(float s);
 
   private:
+    float lookup(float lambda) const {
+        int offset = int(std::lround(lambda)) - int(LambdaMin);
+        if (offset < 0 || offset >= int(values_.size())) return 0;
+        return values_[offset];
+    }
     std::vector<float> values_;
 };
 
-// Planck's law for temperature T (K), normalised to a peak value of 1 (as pbrt does).
+// Planck's law: spectral radiance of a blackbody at temperature T (K), in W / (m^2 sr m);
+// zero for T <= 0. BlackbodySpectrum divides by the value at the peak, so its maximum is 1.
 float blackbody(float lambda_nm, float temperature_k);
 class BlackbodySpectrum final : public Spectrum {
   public:
@@ -78,8 +93,10 @@ class BlackbodySpectrum final : public Spectrum {
     float t_, normalization_;
 };
 
-// Linear combination helpers used by the film and lights.
-// Integral of a spectrum against CIE Y (nm units); pbrt's SpectrumToPhotometric.
+// Sum of a(l) b(l) over every integer nm l in [LambdaMin, LambdaMax] (pbrt's InnerProduct).
+float inner_product(const Spectrum &a, const Spectrum &b);
+// Integral of a spectrum against CIE Y (nm units): inner_product(s, cie_y()). Lights divide by
+// it to give a spectrum a prescribed photometric power (pbrt-v4's SpectrumToPhotometric).
 float inner_product_y(const Spectrum &s);
 
 } // namespace caustica

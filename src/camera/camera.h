@@ -31,6 +31,23 @@ struct CameraWiSample {
     Vec3f p_lens, n_lens;
 };
 
+// The film as a camera sees it (pbrt-v4's FilmBase): raster coordinates span the full
+// resolution, with (0, 0) at the top-left corner of the image and y pointing down. Importance is
+// non-zero over the sample bounds: the (cropped) pixel bounds grown by the filter radius less
+// half a pixel, i.e. wherever a splat still reaches a pixel of the image.
+struct FilmExtent {
+    Vec2i full_resolution;
+    Vec2f sample_min, sample_max;
+    Vec2f filter_radius{0.5f, 0.5f};
+
+    // The whole image, splats reaching pixels through a filter of this radius.
+    static FilmExtent whole_image(Vec2i resolution, Vec2f filter_radius = {0.5f, 0.5f}) {
+        Vec2f grow{filter_radius.x - 0.5f, filter_radius.y - 0.5f};
+        return {resolution, Vec2f{0, 0} - grow, Vec2f{float(resolution.x), float(resolution.y)} + grow,
+                filter_radius};
+    }
+};
+
 class Camera {
   public:
     virtual ~Camera() = default;
@@ -44,6 +61,11 @@ class Camera {
     virtual std::optional<CameraWiSample> sample_wi(Vec3f ref, Vec2f u,
                                                     const SampledWavelengths &lambda) const = 0;
     virtual Vec3f position() const = 0;
+    // False when the camera's importance is not modelled (the orthographic camera, whose
+    // pinhole importance is a Dirac delta in direction, as in pbrt-v4): We and pdf_we are then
+    // zero and sample_wi empty, so integrators that connect light paths to the lens must refuse
+    // such a camera rather than silently lose those paths.
+    virtual bool models_importance() const { return true; }
 };
 
 using CameraPtr = std::shared_ptr<const Camera>;

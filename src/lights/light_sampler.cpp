@@ -9,11 +9,11 @@ UniformLightSampler::UniformLightSampler(const std::vector<LightPtr> &lights) {
     }
 }
 
-SampledLight UniformLightSampler::sample(float u) const {
+std::optional<SampledLight> UniformLightSampler::sample(float u) const {
     if (lights_.empty()) return {};
     int n = int(lights_.size());
     int i = std::min(int(u * n), n - 1);
-    return {lights_[i], 1.f / n};
+    return SampledLight{lights_[i], 1.f / n};
 }
 
 float UniformLightSampler::pmf(const Light *light) const {
@@ -41,11 +41,11 @@ PowerLightSampler::PowerLightSampler(const std::vector<LightPtr> &lights) {
     distribution_ = DiscreteDistribution(power);
 }
 
-SampledLight PowerLightSampler::sample(float u) const {
+std::optional<SampledLight> PowerLightSampler::sample(float u) const {
     if (lights_.empty()) return {};
     float pmf;
     int i = distribution_.sample(u, &pmf);
-    return {lights_[i], pmf};
+    return SampledLight{lights_[i], pmf};
 }
 
 float PowerLightSampler::pmf(const Light *light) const {

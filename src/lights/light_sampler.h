@@ -4,20 +4,22 @@
 #include "core/sampling.h"
 #include "lights/light.h"
 
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
 namespace caustica {
 
 struct SampledLight {
-    const Light *light = nullptr; // null when there are no lights
+    const Light *light = nullptr;
     float pmf = 0;
 };
 
 class LightSampler {
   public:
     virtual ~LightSampler() = default;
-    virtual SampledLight sample(float u) const = 0;
+    // Empty when there are no lights.
+    virtual std::optional<SampledLight> sample(float u) const = 0;
     // Probability that sample() returns `light` (0 for a light it does not know).
     virtual float pmf(const Light *light) const = 0;
 };
@@ -26,7 +28,7 @@ class LightSampler {
 class UniformLightSampler final : public LightSampler {
   public:
     explicit UniformLightSampler(const std::vector<LightPtr> &lights);
-    SampledLight sample(float u) const override;
+    std::optional<SampledLight> sample(float u) const override;
     float pmf(const Light *light) const override;
 
   private:
@@ -41,7 +43,7 @@ class UniformLightSampler final : public LightSampler {
 class PowerLightSampler final : public LightSampler {
   public:
     explicit PowerLightSampler(const std::vector<LightPtr> &lights);
-    SampledLight sample(float u) const override;
+    std::optional<SampledLight> sample(float u) const override;
     float pmf(const Light *light) const override;
 
   private:

@@ -22,6 +22,17 @@ LobeChoice choose_lobes(float reflectance, SampleFlags flags) {
 // eta' of the side wi is on over the side wo is on, for a transmission with wo on the given side.
 float relative_eta(float cos_o, float eta) { return cos_o > 0 ? eta : 1 / eta; }
 
+// The microfacet normal that refracts wo into wi: the generalised half vector eta' wi + wo of
+// Walter et al. 2007 (eq. 16), oriented to the outside; empty unless both directions see the
+// facet from their own side.
+std::optional<Vec3f> transmission_half_vector(Vec3f wo, Vec3f wi, float etap) {
+    Vec3f h = wi * etap + wo;
+    if (length_squared(h) == 0) return {};
+    Vec3f wm = face_forward(normalize(h), Vec3f(0, 0, 1));
+    if (dot(wo, wm) * wo.z <= 0 || dot(wi, wm) * wi.z <= 0) return {};
+    return wm;
+}
+
 } // namespace
 
 DielectricBxDF::DielectricBxDF(const SampledSpectrum &eta,
@@ -112,6 +123,11 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
     float etap;
     if (!refract(wo, wm, eta_[0], &etap, &s.wi)) return {};
     if (same_hemisphere(wo, s.wi) || s.wi.z == 0) return {};
+    // Near eta = 1 the half vector recovered from (wo, wi) is a difference of nearly opposite
+    // vectors, with a direction error of about 1e-7 / |eta' wi + wo| (up to 1e-3): for facets
+    // within that of vertical, its orientation can flip so that f() and pdf() reject the pair.
+    // Rejecting the sample too keeps sample_f, f and pdf describing the same distribution.
+    if (!transmission_half_vector(wo, s.wi, etap)) return {};
     float cos_i = std::abs(s.wi.z);
     float wi_dot_m = dot(s.wi, wm);
     // Jacobian of the refraction half-vector map (Walter et al. 2007, eq. 17).
@@ -137,16 +153,12 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
 float DielectricBxDF::rough_transmission(Vec3f wo, Vec3f wi, float eta, TransportMode mode) const {
     float cos_o = wo.z, cos_i = wi.z;
     float etap = relative_eta(cos_o, eta);
-    // Generalised half vector (Walter et al. 2007, eq. 16), oriented to the outside.
-    Vec3f wm = wi * etap + wo;
-    if (length_squared(wm) == 0) return 0;
-    wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
-    float wo_dot_m = dot(wo, wm), wi_dot_m = dot(wi, wm);
-    // Microfacets must face each direction from that direction's side.
-    if (wi_dot_m * cos_i < 0 || wo_dot_m * cos_o < 0) return 0;
+    std::optional<Vec3f> wm = transmission_half_vector(wo, wi, etap);
+    if (!wm) return 0;
+    float wo_dot_m = dot(wo, *wm), wi_dot_m = dot(wi, *wm);
     float denom = sqr(wi_dot_m + wo_dot_m / etap);
     if (denom == 0) return 0;
-    float t = (1 - fresnel_dielectric(wo_dot_m, eta)) * distribution_.D(wm) * distribution_.G(wo, wi) *
+    float t = (1 - fresnel_dielectric(wo_dot_m, eta)) * distribution_.D(*wm) * distribution_.G(wo, wi) *
               std::abs(wi_dot_m * wo_dot_m / (cos_i * cos_o * denom));
     if (mode == TransportMode::Radiance) t /= sqr(etap);
     return t;
@@ -178,12 +190,18 @@ float DielectricBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) 
     float cos_o = wo.z, cos_i = wi.z;
     if (cos_o == 0 || cos_i == 0) return 0;
     bool reflection = cos_o * cos_i > 0;
-    float etap = reflection ? 1 : relative_eta(cos_o, eta_[0]);
-    Vec3f wm = wi * etap + wo;
-    if (length_squared(wm) == 0) return 0;
-    wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
+    Vec3f wm;
+    if (reflection) {
+        wm = wi + wo;
+        if (length_squared(wm) == 0) return 0;
+        wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
+        if (dot(wi, wm) * cos_i < 0 || dot(wo, wm) * cos_o < 0) return 0;
+    } else {
+        std::optional<Vec3f> m = transmission_half_vector(wo, wi, relative_eta(cos_o, eta_[0]));
+        if (!m) return 0;
+        wm = *m;
+    }
     float wo_dot_m = dot(wo, wm), wi_dot_m = dot(wi, wm);
-    if (wi_dot_m * cos_i < 0 || wo_dot_m * cos_o < 0) return 0;
     LobeChoice lobes = choose_lobes(fresnel_dielectric(wo_dot_m, eta_[0]), flags);
     if (lobes.empty()) return 0;
     if (reflection) {
@@ -191,7 +209,7 @@ float DielectricBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) 
         return distribution_.pdf(wo, wm) / (4 * std::abs(wo_dot_m)) * lobes.reflection_probability();
     }
     if (lobes.pt == 0) return 0;
-    float denom = sqr(wi_dot_m + wo_dot_m / etap);
+    float denom = sqr(wi_dot_m + wo_dot_m / relative_eta(cos_o, eta_[0]));
     if (denom == 0) return 0;
     return distribution_.pdf(wo, wm) * std::abs(wi_dot_m) / denom * lobes.transmission_probability();
 }

@@ -379,8 +379,11 @@ SpectrumTexturePtr ParameterDictionary::get_spectrum_texture_or_null(
 
 float ParameterDictionary::get_one_float_checked(const std::string &name, float def, float lo,
                                                  float hi) const {
-    float v = get_one_float(name, def);
-    if (const ParsedParameter *p = find(name); p && !(v >= lo && v <= hi))
+    const ParsedParameter *p = find_typed(name, {"float", "integer"});
+    if (!p) return def;
+    expect_single(*p, p->numbers.size(), 1);
+    float v = float(p->numbers[0]);
+    if (!(v >= lo && v <= hi))
         fail(*p, "value " + format_number(v) + " is outside the allowed range [" +
                      format_number(lo) + ", " + format_number(hi) + "]");
     return v;

@@ -1,5 +1,15 @@
 // Sample generators. A sampler is a value owned by one thread; start_pixel_sample() makes the
 // sequence a pure function of (pixel, sample index, seed), so images do not depend on threads.
+//
+// Dimension layout (what the n-th request after start_pixel_sample returns), shared by every
+// sampler and by every integrator that renders from the camera:
+//   dimension 0      get_1d()        hero wavelength (SampledWavelengths::sample_visible)
+//   dimensions 1-2   get_pixel_2d()  position within the pixel (through the filter's sampler)
+//   dimensions 3-4   get_2d()        lens position (thin-lens depth of field)
+//   dimensions 5...  integrator      path vertices, in the order the integrator requests them
+// get_camera_sample() (film/film.h) consumes dimensions 1-4. Every get_1d() advances the
+// dimension by one and every get_2d() / get_pixel_2d() by two, so start_pixel_sample(p, i, d)
+// continues a sample's sequence exactly where the d-th value would have come.
 #pragma once
 
 #include "core/vecmath.h"
@@ -12,6 +22,8 @@ class Sampler {
   public:
     virtual ~Sampler() = default;
     virtual int samples_per_pixel() const = 0;
+    // Sample indices beyond samples_per_pixel() are valid (time-limited renders keep going):
+    // they start new, independent rounds of the same pattern.
     virtual void start_pixel_sample(Vec2i pixel, int sample_index, int dimension = 0) = 0;
     virtual float get_1d() = 0;
     virtual Vec2f get_2d() = 0;

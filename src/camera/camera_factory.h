@@ -1,0 +1,32 @@
+// Creates the camera a scene's Camera directive asks for (pbrt-v4 names and parameters).
+#pragma once
+
+#include "camera/camera.h"
+#include "core/error.h"
+#include "params/parameters.h"
+
+#include <string>
+
+namespace caustica {
+
+// "perspective" ("fov" in degrees across the shorter image axis, default 90; "lensradius",
+// default 0; "focaldistance", default 1e6; "frameaspectratio"; "screenwindow") and
+// "orthographic" (the same without "fov"). "realistic" and "spherical" are not supported: they
+// warn and fall back to a perspective camera with the directive's perspective parameters.
+// Unknown types and invalid values are InputErrors. `film` is the film's extent (Film::extent()):
+// importance and splats then cover exactly the pixels the filter reaches, as in pbrt-v4.
+CameraPtr create_camera(const std::string &type, const Transform &world_from_camera,
+                        const FilmExtent &film, const ParameterDictionary &params,
+                        const SourceLocation &loc);
+
+// The same for an uncropped film whose splats reach only the pixel they land in (a box filter
+// of radius 0.5); prefer the FilmExtent overload when a Film exists.
+CameraPtr create_camera(const std::string &type, const Transform &world_from_camera,
+                        Vec2i resolution, const ParameterDictionary &params,
+                        const SourceLocation &loc);
+
+// The exposure time pbrt-v4 hands to the film's sensor: the camera's "shutterclose" (default 1)
+// minus "shutteropen" (default 0). An InputError unless positive.
+float camera_exposure_time(const ParameterDictionary &camera_params, const SourceLocation &loc);
+
+} // namespace caustica

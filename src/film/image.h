@@ -1,0 +1,28 @@
+// An RGB image in linear floating point: what the film produces and the image files hold.
+#pragma once
+
+#include "core/vecmath.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace caustica {
+
+struct Image {
+    int width = 0, height = 0;
+    // Where the image lies within the full frame and the frame's size: a crop window renders
+    // part of a frame (OpenEXR's data window within its display window). An uncropped image has
+    // origin (0, 0) and full_resolution (width, height).
+    Vec2i origin{0, 0};
+    Vec2i full_resolution{0, 0};
+    // Three floats (R, G, B) per pixel, rows from the top of the image down.
+    std::vector<float> rgb;
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), full_resolution{w, h}, rgb(size_t(w) * h * 3, 0.f) {}
+
+    float &at(int x, int y, int c) { return rgb[(size_t(y) * width + x) * 3 + c]; }
+    float at(int x, int y, int c) const { return rgb[(size_t(y) * width + x) * 3 + c]; }
+};
+
+} // namespace caustica

@@ -1,0 +1,284 @@
+#include "geometry/embree_scene.h"
+
+#include "core/error.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace caustica {
+
+namespace {
+
+// Embree reports errors through this callback; build steps then check rtcGetDeviceError.
+void report_embree_error(void *, RTCError code, const char *message) {
+    if (code != RTC_ERROR_NONE) warning(std::string("Embree: ") + (message ? message : "error"));
+}
+
+// User geometry callbacks for analytic shapes: our double-precision intersection code.
+const AnalyticShape *shape_of(void *user) { return static_cast<const AnalyticShape *>(user); }
+
+void analytic_bounds(const RTCBoundsFunctionArguments *args) {
+    Bounds3f b = shape_of(args->geometryUserPtr)->bounds();
+    args->bounds_o->lower_x = b.lo.x;
+    args->bounds_o->lower_y = b.lo.y;
+    args->bounds_o->lower_z = b.lo.z;
+    args->bounds_o->upper_x = b.hi.x;
+    args->bounds_o->upper_y = b.hi.y;
+    args->bounds_o->upper_z = b.hi.z;
+}
+
+Vec3f ray_origin(RTCRayN *rays, unsigned n, unsigned i) {
+    return {RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)};
+}
+Vec3f ray_direction(RTCRayN *rays, unsigned n, unsigned i) {
+    return {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
+}
+
+void analytic_intersect(const RTCIntersectFunctionNArguments *args) {
+    const AnalyticShape *shape = shape_of(args->geometryUserPtr);
+    RTCRayN *rays = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN *hits = RTCRayHitN_HitN(args->rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        // The ray arrives in the space the geometry lives in (an instance's, if instanced).
+        std::optional<float> t = shape->intersect_t(ray_origin(rays, args->N, i),
+                                                    ray_direction(rays, args->N, i),
+                                                    RTCRayN_tfar(rays, args->N, i));
+        if (!t || *t < RTCRayN_tnear(rays, args->N, i)) continue;
+        RTCRayN_tfar(rays, args->N, i) = *t;
+        RTCHitN_Ng_x(hits, args->N, i) = 0;
+        RTCHitN_Ng_y(hits, args->N, i) = 0;
+        RTCHitN_Ng_z(hits, args->N, i) = 1;
+        RTCHitN_u(hits, args->N, i) = 0;
+        RTCHitN_v(hits, args->N, i) = 0;
+        RTCHitN_primID(hits, args->N, i) = args->primID;
+        RTCHitN_geomID(hits, args->N, i) = args->geomID;
+        for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
+            RTCHitN_instID(hits, args->N, i, l) = args->context->instID[l];
+    }
+}
+
+void analytic_occluded(const RTCOccludedFunctionNArguments *args) {
+    const AnalyticShape *shape = shape_of(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (!args->valid[i]) continue;
+        std::optional<float> t = shape->intersect_t(ray_origin(args->ray, args->N, i),
+                                                    ray_direction(args->ray, args->N, i),
+                                                    RTCRayN_tfar(args->ray, args->N, i));
+        if (t && *t >= RTCRayN_tnear(args->ray, args->N, i))
+            RTCRayN_tfar(args->ray, args->N, i) = -Infinity; // Embree's "occluded" mark
+    }
+}
+
+// Moves a surface record from an instance's space to render space.
+void transform_interaction(const Transform &render_from_instance, SurfaceInteraction *si) {
+    si->p = render_from_instance.apply_point(si->p);
+    si->n = normalize(render_from_instance.apply_normal(si->n));
+    si->dpdu = render_from_instance.apply_vector(si->dpdu);
+    si->dpdv = render_from_instance.apply_vector(si->dpdv);
+    Vec3f ns = normalize(render_from_instance.apply_normal(si->shading.n));
+    si->set_shading(ns, render_from_instance.apply_vector(si->shading.dpdu),
+                    render_from_instance.apply_vector(si->shading.dpdv));
+}
+
+} // namespace
+
+GeometryScene::GeometryScene() {
+    device_ = rtcNewDevice(nullptr);
+    if (!device_) throw std::runtime_error("cannot create the Embree device");
+    rtcSetDeviceErrorFunction(device_, report_embree_error, nullptr);
+    scene_ = new_scene();
+}
+
+GeometryScene::~GeometryScene() {
+    for (Prototype &p : prototypes_) rtcReleaseScene(p.scene);
+    rtcReleaseScene(scene_);
+    rtcReleaseDevice(device_);
+}
+
+RTCScene GeometryScene::new_scene() const {
+    RTCScene scene = rtcNewScene(device_);
+    // Robust traversal keeps shared edges watertight, so rays do not slip between triangles.
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    return scene;
+}
+
+void GeometryScene::check_device(const char *what) const {
+    RTCError error = rtcGetDeviceError(device_);
+    if (error != RTC_ERROR_NONE)
+        throw std::runtime_error(std::string("Embree failed while ") + what + " (error code " +
+                                 std::to_string(int(error)) + ")");
+}
+
+void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group) {
+    RTCGeometry geometry;
+    if (group.mesh) {
+        const TriangleMesh &mesh = *group.mesh;
+        geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                   mesh.positions().data(), 0, sizeof(Vec3f), mesh.vertex_count());
+        rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                   mesh.indices().data(), 0, 3 * sizeof(int),
+                                   mesh.triangle_count());
+        triangle_count_ += mesh.triangle_count();
+    } else {
+        geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(geometry, 1);
+        rtcSetGeometryUserData(geometry, group.analytic.get());
+        rtcSetGeometryBoundsFunction(geometry, analytic_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(geometry, analytic_intersect);
+        rtcSetGeometryOccludedFunction(geometry, analytic_occluded);
+    }
+    rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene, geometry, geometry_id);
+    rtcReleaseGeometry(geometry);
+    ++shape_count_;
+    check_device("adding a shape");
+}
+
+void GeometryScene::add(std::shared_ptr<const ShapeGroup> group, PrimitiveAttributes attributes) {
+    if (committed_) throw std::logic_error("GeometryScene::add after commit");
+    if (!group || (!group->mesh && !group->analytic)) return;
+    attach(scene_, unsigned(slots_.size()), *group);
+    slots_.push_back({Primitive{std::move(group), std::move(attributes)}, -1});
+}
+
+int GeometryScene::add_prototype(
+    std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> shapes) {
+    if (committed_) throw std::logic_error("GeometryScene::add_prototype after commit");
+    Prototype prototype{new_scene(), {}};
+    for (auto &[group, attributes] : shapes) {
+        if (!group || (!group->mesh && !group->analytic)) continue;
+        attach(prototype.scene, unsigned(prototype.primitives.size()), *group);
+        prototype.primitives.push_back({std::move(group), std::move(attributes)});
+    }
+    // Instanced scenes must be committed before the scenes that instance them.
+    rtcCommitScene(prototype.scene);
+    check_device("building an object instance");
+    prototypes_.push_back(std::move(prototype));
+    return int(prototypes_.size()) - 1;
+}
+
+void GeometryScene::add_instance(int prototype, const Transform &render_from_instance) {
+    if (committed_) throw std::logic_error("GeometryScene::add_instance after commit");
+    if (prototype < 0 || size_t(prototype) >= prototypes_.size())
+        throw std::out_of_range("GeometryScene::add_instance: no such prototype");
+    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geometry, prototypes_[prototype].scene);
+    float xfm[12];
+    const Matrix4 &m = render_from_instance.matrix();
+    for (int column = 0; column < 4; ++column)
+        for (int row = 0; row < 3; ++row) xfm[3 * column + row] = m.m[row][column];
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene_, geometry, unsigned(slots_.size()));
+    rtcReleaseGeometry(geometry);
+    check_device("adding an object instance");
+    instances_.push_back({prototype, render_from_instance, render_from_instance.inverse()});
+    slots_.push_back({Primitive{}, int(instances_.size()) - 1});
+}
+
+void GeometryScene::commit() {
+    if (committed_) throw std::logic_error("GeometryScene::commit called twice");
+    rtcCommitScene(scene_);
+    check_device("building the acceleration structure");
+    committed_ = true;
+}
+
+bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit;
+    rayhit.ray.org_x = ray.o.x;
+    rayhit.ray.org_y = ray.o.y;
+    rayhit.ray.org_z = ray.o.z;
+    rayhit.ray.dir_x = ray.d.x;
+    rayhit.ray.dir_y = ray.d.y;
+    rayhit.ray.dir_z = ray.d.z;
+    rayhit.ray.tnear = 0;
+    rayhit.ray.tfar = ray.t_max;
+    rayhit.ray.time = 0;
+    rayhit.ray.mask = ~0u;
+    rayhit.ray.id = 0;
+    rayhit.ray.flags = 0;
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
+        rayhit.hit.instID[l] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &rayhit);
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+
+    const Primitive *primitive;
+    const Instance *instance = nullptr;
+    if (rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+        instance = &instances_[slots_[rayhit.hit.instID[0]].instance];
+        primitive = &prototypes_[instance->prototype].primitives[rayhit.hit.geomID];
+    } else {
+        primitive = &slots_[rayhit.hit.geomID].primitive;
+    }
+
+    // Shading data are computed where the shape lives and then moved to render space. The ray
+    // parameter is the same in both spaces (the maps are affine).
+    Ray local = ray;
+    if (instance) {
+        local.o = instance->instance_from_render.apply_point(ray.o);
+        local.d = instance->instance_from_render.apply_vector(ray.d);
+    }
+    float t = rayhit.ray.tfar;
+    unsigned index = rayhit.hit.primID;
+    const ShapeGroup &group = *primitive->group;
+    if (group.mesh) {
+        // Embree's barycentrics weight vertices 1 and 2; the point is interpolated from the
+        // vertices, so it lies on the triangle up to rounding.
+        float u = rayhit.hit.u, v = rayhit.hit.v;
+        float b[3] = {std::max(0.f, 1 - u - v), u, v};
+        *si = group.mesh->interaction(int(index), b, -normalize(local.d));
+    } else {
+        *si = group.analytic->interaction(local, t);
+    }
+    if (instance) transform_interaction(instance->render_from_instance, si);
+
+    si->wo = -normalize(ray.d);
+    si->t = t;
+    si->face_index = int(index);
+    si->material = primitive->attributes.material;
+    si->medium_interface = primitive->attributes.medium_interface;
+    const auto &lights = primitive->attributes.area_lights;
+    si->area_light = index < lights.size() ? lights[index] : nullptr;
+    return true;
+}
+
+bool GeometryScene::occluded(const Ray &ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r;
+    r.org_x = ray.o.x;
+    r.org_y = ray.o.y;
+    r.org_z = ray.o.z;
+    r.dir_x = ray.d.x;
+    r.dir_y = ray.d.y;
+    r.dir_z = ray.d.z;
+    r.tnear = 0;
+    // Embree's interval is closed; stop one float short of t_max to make it open.
+    r.tfar = std::nextafter(ray.t_max, 0.f);
+    r.time = 0;
+    r.mask = ~0u;
+    r.id = 0;
+    r.flags = 0;
+    rtcOccluded1(scene_, &context, &r);
+    return r.tfar < 0;
+}
+
+Bounds3f GeometryScene::bounds() const {
+    if (slots_.empty()) return {};
+    RTCBounds b;
+    rtcGetSceneBounds(scene_, &b);
+    Bounds3f result;
+    result.lo = {b.lower_x, b.lower_y, b.lower_z};
+    result.hi = {b.upper_x, b.upper_y, b.upper_z};
+    return result;
+}
+
+} // namespace caustica

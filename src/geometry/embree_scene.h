@@ -1,0 +1,90 @@
+// The scene's geometry in Embree: shapes, prototypes (object instancing) and instances, and the
+// closest-hit and any-hit queries that turn Embree's hits into SurfaceInteractions.
+#pragma once
+
+#include "geometry/interaction.h"
+#include "geometry/shape_group.h"
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace caustica {
+
+class Material;
+class Light;
+struct MediumInterface;
+
+// What the renderer attaches to the primitives of one shape directive.
+struct PrimitiveAttributes {
+    const Material *material = nullptr;
+    const MediumInterface *medium_interface = nullptr;
+    // Empty, or one per primitive of the group (ShapeGroup::shapes() order).
+    std::vector<const Light *> area_lights;
+};
+
+class GeometryScene {
+  public:
+    GeometryScene();
+    ~GeometryScene();
+    GeometryScene(const GeometryScene &) = delete;
+    GeometryScene &operator=(const GeometryScene &) = delete;
+
+    // Building (single-threaded, before commit()).
+    void add(std::shared_ptr<const ShapeGroup> group, PrimitiveAttributes attributes);
+    // An object that instances refer to, built as its own Embree scene. Returns its index.
+    int add_prototype(
+        std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> shapes);
+    void add_instance(int prototype, const Transform &render_from_instance);
+    // Builds the acceleration structure (high quality, robust traversal). Call once.
+    void commit();
+
+    // Queries, safe to call from many threads at once after commit().
+    // Closest hit with 0 < t <= ray.t_max; fills every field of *si.
+    bool intersect(const Ray &ray, SurfaceInteraction *si) const;
+    // Any hit with 0 < t < ray.t_max.
+    bool occluded(const Ray &ray) const;
+
+    Bounds3f bounds() const;
+    size_t shape_count() const { return shape_count_; }        // directives, prototypes' once
+    size_t triangle_count() const { return triangle_count_; }  // stored, prototypes' once
+    size_t instance_count() const { return instances_.size(); }
+    // For benchmarks of raw Embree traversal.
+    RTCScene handle() const { return scene_; }
+
+  private:
+    struct Primitive {
+        std::shared_ptr<const ShapeGroup> group;
+        PrimitiveAttributes attributes;
+    };
+    struct Instance {
+        int prototype;
+        Transform render_from_instance, instance_from_render;
+    };
+    struct Prototype {
+        RTCScene scene;
+        std::vector<Primitive> primitives; // by Embree geometry ID
+    };
+    // Top-level geometry IDs are either a primitive or an instance.
+    struct Slot {
+        Primitive primitive;
+        int instance = -1;
+    };
+
+    // Attaches the group's Embree geometry to scene with ID geometry_id.
+    void attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group);
+    RTCScene new_scene() const;
+    void check_device(const char *what) const;
+
+    RTCDevice device_ = nullptr;
+    RTCScene scene_ = nullptr;
+    std::vector<Slot> slots_;
+    std::vector<Prototype> prototypes_;
+    std::vector<Instance> instances_;
+    size_t shape_count_ = 0, triangle_count_ = 0;
+    bool committed_ = false;
+};
+
+} // namespace caustica

@@ -1,0 +1,87 @@
+#include "geometry/mesh_file.h"
+
+#include <assimp/cimport.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <zlib.h>
+
+#include <filesystem>
+#include <memory>
+
+namespace caustica {
+
+namespace {
+
+struct SceneDeleter {
+    void operator()(const aiScene *scene) const { aiReleaseImport(scene); }
+};
+using ScenePtr = std::unique_ptr<const aiScene, SceneDeleter>;
+
+bool ends_with(const std::string &s, const std::string &suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::vector<char> read_gzip(const std::string &path, const SourceLocation &loc) {
+    gzFile file = gzopen(path.c_str(), "rb");
+    if (!file) throw InputError(loc, "cannot open mesh file \"" + path + "\"");
+    std::vector<char> data;
+    char buffer[1 << 16];
+    int n;
+    while ((n = gzread(file, buffer, sizeof buffer)) > 0) data.insert(data.end(), buffer, buffer + n);
+    int error = 0;
+    std::string message = n < 0 ? gzerror(file, &error) : "";
+    gzclose(file);
+    if (n < 0) throw InputError(loc, "cannot decompress \"" + path + "\": " + message);
+    return data;
+}
+
+} // namespace
+
+MeshData read_mesh_file(const std::string &path, const SourceLocation &loc) {
+    if (!std::filesystem::exists(path)) throw InputError(loc, "mesh file \"" + path + "\" not found");
+    // No other post-processing: pbrt uses the vertices, normals and winding as stored.
+    const unsigned flags = aiProcess_Triangulate;
+    ScenePtr scene;
+    if (ends_with(path, ".gz")) {
+        std::vector<char> data = read_gzip(path, loc);
+        std::string inner = path.substr(0, path.size() - 3);
+        std::string hint = std::filesystem::path(inner).extension().string();
+        if (!hint.empty()) hint = hint.substr(1);
+        scene.reset(aiImportFileFromMemory(data.data(), unsigned(data.size()), flags, hint.c_str()));
+    } else {
+        scene.reset(aiImportFile(path.c_str(), flags));
+    }
+    if (!scene) throw InputError(loc, "cannot read mesh file \"" + path + "\": " + aiGetErrorString());
+
+    MeshData mesh;
+    bool all_normals = true, all_uv = true;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        all_normals = all_normals && scene->mMeshes[m]->HasNormals();
+        all_uv = all_uv && scene->mMeshes[m]->HasTextureCoords(0);
+    }
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh *am = scene->mMeshes[m];
+        int base = int(mesh.p.size());
+        for (unsigned v = 0; v < am->mNumVertices; ++v) {
+            const aiVector3D &p = am->mVertices[v];
+            mesh.p.push_back({p.x, p.y, p.z});
+            if (all_normals) {
+                const aiVector3D &n = am->mNormals[v];
+                mesh.n.push_back({n.x, n.y, n.z});
+            }
+            if (all_uv) {
+                const aiVector3D &t = am->mTextureCoords[0][v];
+                mesh.uv.push_back({t.x, t.y});
+            }
+        }
+        for (unsigned f = 0; f < am->mNumFaces; ++f) {
+            const aiFace &face = am->mFaces[f];
+            if (face.mNumIndices != 3) continue; // points and lines
+            for (int i = 0; i < 3; ++i) mesh.indices.push_back(base + int(face.mIndices[i]));
+        }
+    }
+    if (mesh.indices.empty()) throw InputError(loc, "mesh file \"" + path + "\" holds no triangles");
+    return mesh;
+}
+
+} // namespace caustica

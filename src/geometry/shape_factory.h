@@ -1,0 +1,24 @@
+// Creating the geometry of a Shape directive from its parameters.
+#pragma once
+
+#include "core/transform.h"
+#include "geometry/shape_group.h"
+#include "params/parameters.h"
+
+#include <memory>
+#include <string>
+
+namespace caustica {
+
+// "trianglemesh", "plymesh" (file relative to the scene's directory; .ply.gz accepted),
+// "bilinearmesh" (as triangles), "sphere" and "disk". Shapes pbrt knows that we do not render
+// ("loopsubdiv", "curve", "cylinder", and pbrt-v3's quadrics) give a warning naming them and
+// nullptr; unknown names are an InputError. Parameters are read from params, whose unread ones the
+// caller reports.
+std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
+                                         const Transform &render_from_object,
+                                         bool reverse_orientation,
+                                         const ParameterDictionary &params,
+                                         const SourceLocation &loc);
+
+} // namespace caustica

@@ -1,0 +1,28 @@
+// The geometry of one Shape directive: a triangle mesh or a single analytic shape.
+#pragma once
+
+#include "geometry/analytic_shape.h"
+#include "geometry/triangle_mesh.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace caustica {
+
+struct ShapeGroup {
+    std::string type;                              // the directive's shape name
+    std::shared_ptr<const TriangleMesh> mesh;      // set for meshes
+    std::shared_ptr<AnalyticShape> analytic;       // set for spheres and disks
+
+    // One Shape per primitive, in the order the scene's primitives use (a Triangle per mesh
+    // triangle), so that an area light can be made for each. Builds new Triangle objects on every
+    // call for meshes.
+    std::vector<std::shared_ptr<Shape>> shapes() const;
+    // shapes().size() without building them.
+    size_t primitive_count() const;
+    size_t triangle_count() const { return mesh ? size_t(mesh->triangle_count()) : 0; }
+    Bounds3f bounds() const;
+};
+
+} // namespace caustica
