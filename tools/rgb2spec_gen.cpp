@@ -28,11 +28,13 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -236,14 +238,14 @@ std::vector<float> optimize_table(const ColorSpaceDefinition &def, int res) {
                     return rgb;
                 };
                 const int start = res / 5;
-                Vec3 c{0, 0, 0};
+                Vec3 c{0, 0, 0}, c_start;
                 for (int k = start; k < res; ++k) {
                     fit.fit(rgb_at(k), c);
                     store(l, k, j, i, c);
+                    if (k == start) c_start = c;
                 }
-                c = {0, 0, 0};
-                fit.fit(rgb_at(start), c);
-                for (int k = start; k >= 0; --k) {
+                c = c_start;
+                for (int k = start - 1; k >= 0; --k) {
                     fit.fit(rgb_at(k), c);
                     store(l, k, j, i, c);
                 }
@@ -277,13 +279,12 @@ void write_file(const std::filesystem::path &path, const void *data, size_t size
     std::filesystem::rename(tmp, path);
 }
 
-std::string assembler_string(const std::string &s) {
-    std::string quoted;
-    for (char ch : s) {
-        if (ch == '"' || ch == '\\') quoted += "\\\\";
-        quoted += ch;
-    }
-    return quoted;
+// The path as it goes between quotes in the .incbin directive of the generated source.
+std::string incbin_path(const std::filesystem::path &file) {
+    std::string path = std::filesystem::absolute(file).string();
+    if (path.find_first_of("\"\\\n") != std::string::npos)
+        throw std::runtime_error("output path contains a quote or backslash: " + path);
+    return path;
 }
 
 } // namespace
@@ -312,8 +313,7 @@ int main(int argc, char **argv) {
             write_file(bin, table.data(), table.size() * sizeof(float));
             std::string sym = symbol_name(def.name);
             source += "asm(\".section .rodata\\n.balign 16\\n.globl " + sym + "\\n.hidden " + sym +
-                      "\\n" + sym + ":\\n.incbin \\\"" +
-                      assembler_string(std::filesystem::absolute(bin).string()) +
+                      "\\n" + sym + ":\\n.incbin \\\"" + incbin_path(bin) +
                       "\\\"\\n.previous\\n\");\n";
             source += "extern \"C\" const float " + sym + "[];\n";
             lookup += "    if (color_space == \"" + std::string(def.name) + "\") {\n"

@@ -15,7 +15,7 @@ struct Proportions {
     double table = 0.53;            // table width / girdle diameter
     double crown_angle = 34.5;      // degrees, bezel facets against the girdle plane
     double pavilion_angle = 40.75;  // degrees, pavilion mains against the girdle plane
-    double star_angle = 21.3;       // degrees: stars reach half-way to the girdle
+    double star_angle = 23.1;       // degrees: stars reach half-way to the girdle
     double upper_girdle_angle = 41.0;
     double lower_girdle_angle = 42.0;
     double girdle_thickness = 0.02; // / diameter
@@ -57,9 +57,10 @@ inline Vec tilted_normal(double phi, double tilt_deg, double up) {
 inline std::vector<Plane> facet_planes(const Proportions &p) {
     std::vector<Plane> planes;
     const double half_girdle = p.girdle_thickness; // thickness relative to the diameter 2
-    // The table is an octagon whose edges face the stars at distance table/1 (relative to the
-    // girdle radius); the bezels run from its corners down to the girdle at the crown angle.
-    const double table_corner = p.table / std::cos(kPi / 8);
+    // The table is an octagon with corners at radius `table` (relative to the girdle radius);
+    // the bezels run from its corners down to the girdle at the crown angle, and the stars
+    // share its edges.
+    const double table_corner = p.table;
     const double table_z = half_girdle + (1 - table_corner) * std::tan(p.crown_angle * kPi / 180);
     planes.push_back({{0, 0, 1}, table_z, FacetKind::Table});
     auto through = [](Vec n, Vec point, FacetKind kind) { return Plane{n, dot(n, point), kind}; };
@@ -68,7 +69,8 @@ inline std::vector<Plane> facet_planes(const Proportions &p) {
         // Bezels touch the girdle at their azimuth; stars share an edge with the table.
         planes.push_back(through(tilted_normal(phi, p.crown_angle, 1),
                                  {std::cos(phi), std::sin(phi), half_girdle}, FacetKind::Bezel));
-        Vec table_edge{p.table * std::cos(phi_star), p.table * std::sin(phi_star), table_z};
+        const double edge = p.table * std::cos(kPi / 8);
+        Vec table_edge{edge * std::cos(phi_star), edge * std::sin(phi_star), table_z};
         planes.push_back(through(tilted_normal(phi_star, p.star_angle, 1), table_edge, FacetKind::Star));
         planes.push_back(through(tilted_normal(phi, p.pavilion_angle, -1),
                                  {std::cos(phi), std::sin(phi), -half_girdle}, FacetKind::PavilionMain));

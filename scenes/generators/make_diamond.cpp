@@ -19,10 +19,13 @@ int main(int argc, char **argv) {
     for (const Face &f : faces) {
         int base = int(points.size());
         for (const Vec &v : f.vertices) points.push_back(v * radius);
+        // Faces are counter-clockwise seen from outside in the generator's z-up frame; the
+        // output swaps y and z (y up, as scenes expect), a reflection, so the fan is reversed to
+        // keep pbrt's geometric normals pointing out of the stone (the dielectric needs that).
         for (size_t i = 1; i + 1 < f.vertices.size(); ++i) {
             indices.push_back(base);
-            indices.push_back(base + int(i));
             indices.push_back(base + int(i) + 1);
+            indices.push_back(base + int(i));
         }
     }
     std::printf("# Round brilliant cut, Tolkowsky proportions, %zu faces (57 facets + girdle).\n", faces.size());
