@@ -1,0 +1,160 @@
+// Self-intersection and leaks: rays spawned from hit points (ray.h's offsets, Wachter and Binder
+// 2019) must neither hit the surface they leave nor slip out of closed surfaces, also at large
+// coordinates and grazing angles.
+#include "core/sampling.h"
+#include "geometry/sphere.h"
+#include "geometry_test_util.h"
+
+namespace caustica {
+namespace {
+
+// A direction at angle theta from n with cos theta log-uniform in [1e-5, 1] (so grazing angles
+// are well represented), random azimuth, on the side `sign` of n.
+Vec3f grazing_direction(Vec3f n, float sign, Rng &rng) {
+    float cos_theta = std::pow(10.f, -5 * rng.uniform());
+    float sin_theta = safe_sqrt(1 - cos_theta * cos_theta);
+    float phi = 2 * Pi * rng.uniform();
+    Frame f = Frame::from_z(n * sign);
+    return normalize(f.from_local(spherical_direction(sin_theta, cos_theta, phi)));
+}
+
+// A tilted planar grid of 8 x 8 quads (128 triangles with shared edges) around `center`.
+std::shared_ptr<ShapeGroup> tilted_grid(Vec3f center, float size, Vec3f *normal) {
+    Vec3f n = normalize(Vec3f{1, 2, 3}), a, b;
+    coordinate_system(n, &a, &b);
+    std::vector<Vec3f> p;
+    for (int j = 0; j <= 8; ++j)
+        for (int i = 0; i <= 8; ++i)
+            p.push_back(center + a * (size * (i / 8.f - 0.5f)) + b * (size * (j / 8.f - 0.5f)));
+    std::vector<int> indices;
+    for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i) {
+            int v = j * 9 + i;
+            indices.insert(indices.end(), {v, v + 1, v + 10, v, v + 10, v + 9});
+        }
+    auto group = test::mesh_group({}, false, indices, p);
+    // Geometric normal of the winding used above.
+    *normal = normalize(cross(p[0] - p[10], p[1] - p[10]));
+    return group;
+}
+
+class LargeCoordinates : public ::testing::TestWithParam<float> {};
+
+TEST_P(LargeCoordinates, RaysLeavingAPlaneNeverHitIt) {
+    float scale = GetParam();
+    Vec3f center{scale, -0.7f * scale, 0.4f * scale}, n;
+    float size = std::max(1.f, scale * 1e-2f);
+    auto scene = test::scene_of({tilted_grid(center, size, &n)});
+    Vec3f a, b;
+    coordinate_system(n, &a, &b);
+    Rng rng(3, uint64_t(scale));
+    int self_hits = 0, tested = 0;
+    for (int i = 0; i < 4000; ++i) {
+        // Aim at a random point of the grid from either side.
+        float side = rng.uniform() < 0.5f ? 1 : -1;
+        Vec3f target = center + a * (size * 0.9f * (rng.uniform() - 0.5f)) +
+                       b * (size * 0.9f * (rng.uniform() - 0.5f));
+        Vec3f origin = target + normalize(n * side + a * (rng.uniform() - 0.5f)) * size;
+        SurfaceInteraction si;
+        ASSERT_TRUE(scene->intersect({origin, normalize(target - origin)}, &si));
+        // Leave into both hemispheres, down to grazing angles.
+        for (float sign : {1.f, -1.f}) {
+            Ray r = si.spawn_ray(grazing_direction(si.n, sign, rng));
+            SurfaceInteraction again;
+            self_hits += scene->intersect(r, &again);
+            ++tested;
+        }
+    }
+    EXPECT_EQ(self_hits, 0) << "of " << tested;
+}
+
+TEST_P(LargeCoordinates, ClosedBoxDoesNotLeak) {
+    // A rotated box: rays bouncing inside at grazing angles must keep hitting its walls, and
+    // never the wall they leave (its normal differs from the one left by 90 degrees or more).
+    float scale = GetParam();
+    Vec3f center{-0.6f * scale, scale, 0.3f * scale};
+    float half = std::max(1.f, scale * 1e-2f);
+    Transform t = Transform::translate(center) * Transform::rotate(37, {1, 1, 0.3f});
+    auto scene = test::scene_of({test::box_group(t, {-half, -half, -half}, {half, half, half})});
+    Rng rng(11, uint64_t(scale));
+    int leaks = 0, same_wall = 0, bounces = 0;
+    for (int path = 0; path < 1000; ++path) {
+        Vec3f origin = center + Vec3f{rng.uniform() - 0.5f, rng.uniform() - 0.5f,
+                                      rng.uniform() - 0.5f} * half;
+        Ray ray{origin, sample_uniform_sphere(rng.uniform2())};
+        SurfaceInteraction si;
+        ASSERT_TRUE(scene->intersect(ray, &si));
+        for (int bounce = 0; bounce < 10; ++bounce) {
+            // Box normals face outwards; continue inwards.
+            Ray next = si.spawn_ray(grazing_direction(si.n, -1, rng));
+            SurfaceInteraction hit;
+            ++bounces;
+            if (!scene->intersect(next, &hit)) {
+                ++leaks;
+                break;
+            }
+            same_wall += dot(hit.n, si.n) > 0.5f;
+            si = hit;
+        }
+    }
+    EXPECT_EQ(leaks, 0) << "of " << bounces;
+    EXPECT_EQ(same_wall, 0) << "of " << bounces;
+}
+
+INSTANTIATE_TEST_SUITE_P(Geometry, LargeCoordinates, ::testing::Values(1.f, 1e3f, 1e5f));
+
+TEST(Robustness, SphereSurfacesAtLargeCoordinates) {
+    for (float scale : {1.f, 1e5f}) {
+        Vec3f center{scale, 0.5f * scale, -scale};
+        float radius = std::max(1.f, scale * 1e-4f);
+        auto sphere = std::make_shared<Sphere>(Transform::translate(center), false, radius,
+                                               -radius, radius, 360);
+        auto scene = test::scene_of({test::analytic_group(sphere)});
+        Rng rng(5, uint64_t(scale));
+        int self_hits = 0, leaks = 0, short_chords = 0;
+        for (int i = 0; i < 4000; ++i) {
+            Vec3f w = sample_uniform_sphere(rng.uniform2());
+            // Alternate hitting from outside and from inside.
+            bool from_inside = i % 2 == 1;
+            Vec3f origin = from_inside ? center : center + w * (3 * radius);
+            SurfaceInteraction si;
+            ASSERT_TRUE(scene->intersect({origin, from_inside ? w : -w}, &si));
+            SurfaceInteraction hit;
+            self_hits += scene->intersect(si.spawn_ray(grazing_direction(si.n, 1, rng)), &hit);
+            // Inwards the ray must reach the far side. The spawn offset puts the origin at least
+            // ~1e-6 r inside (256 ulps per coordinate, or 2^-16 near zero, times the normal's
+            // components), and from depth delta even a tangent chord is sqrt(2 r delta) >
+            // 1.4e-3 r long; a hit much closer than that is the surface just left.
+            Ray inward = si.spawn_ray(grazing_direction(si.n, -1, rng));
+            if (!scene->intersect(inward, &hit)) {
+                ++leaks;
+                continue;
+            }
+            short_chords += distance(hit.p, si.p) < 5e-4f * radius;
+        }
+        EXPECT_EQ(self_hits, 0) << "scale " << scale;
+        EXPECT_EQ(leaks, 0) << "scale " << scale;
+        EXPECT_EQ(short_chords, 0) << "scale " << scale;
+    }
+}
+
+TEST(Robustness, ShadowRaysBetweenSurfacePointsAreUnoccluded) {
+    // spawn_ray_to between two points on facing walls of an otherwise empty box interior must
+    // not be blocked by either wall.
+    auto scene = test::scene_of({test::box_group(Transform::translate({1e4f, 2e4f, -3e4f}),
+                                                 {-50, -50, -50}, {50, 50, 50})});
+    Rng rng(9, 9);
+    int blocked = 0;
+    for (int i = 0; i < 2000; ++i) {
+        Vec3f c{1e4f, 2e4f, -3e4f};
+        SurfaceInteraction a, b;
+        ASSERT_TRUE(scene->intersect({c, sample_uniform_sphere(rng.uniform2())}, &a));
+        ASSERT_TRUE(scene->intersect({c, sample_uniform_sphere(rng.uniform2())}, &b));
+        if (dot(a.n, b.n) > 0.99f) continue; // same wall: the segment runs inside the wall
+        blocked += scene->occluded(a.spawn_ray_to(b.p, b.n));
+    }
+    EXPECT_EQ(blocked, 0);
+}
+
+} // namespace
+} // namespace caustica
