@@ -96,8 +96,8 @@ std::shared_ptr<PiecewiseLinearSpectrum> daylight_illuminant(float cct) {
     for (int i = 0; i < cie_data::DaylightSamples; ++i)
         values[i] = float(cie_data::daylight_s0[i] + m1 * cie_data::daylight_s1[i] +
                           m2 * cie_data::daylight_s2[i]);
-    return std::make_shared<PiecewiseLinearSpectrum>(regularly_sampled(
-        values, cie_data::DaylightLambdaMin, cie_data::DaylightLambdaStep));
+    return std::make_shared<PiecewiseLinearSpectrum>(
+        regularly_sampled(values, cie_data::DaylightLambdaMin, cie_data::DaylightLambdaStep));
 }
 
 } // namespace caustica

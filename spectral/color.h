@@ -48,14 +48,18 @@ struct RGB {
     float average() const { return (r + g + b) / 3; }
 };
 inline RGB operator*(float s, const RGB &c) { return c * s; }
-inline RGB clamp_zero(const RGB &c) { return {std::max(0.f, c.r), std::max(0.f, c.g), std::max(0.f, c.b)}; }
+inline RGB clamp_zero(const RGB &c) {
+    return {std::max(0.f, c.r), std::max(0.f, c.g), std::max(0.f, c.b)};
+}
 
 // Row-major 3x3 matrix acting on column vectors.
 struct Matrix3 {
     std::array<std::array<float, 3>, 3> m{};
 
     static Matrix3 identity() { return {{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}}; }
-    static Matrix3 diagonal(float a, float b, float c) { return {{{{a, 0, 0}, {0, b, 0}, {0, 0, c}}}}; }
+    static Matrix3 diagonal(float a, float b, float c) {
+        return {{{{a, 0, 0}, {0, b, 0}, {0, 0, c}}}};
+    }
     const std::array<float, 3> &operator[](int row) const { return m[row]; }
     std::array<float, 3> &operator[](int row) { return m[row]; }
 

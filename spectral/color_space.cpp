@@ -12,13 +12,19 @@ namespace caustica {
 RGBColorSpace::RGBColorSpace(std::string name, Chromaticity red, Chromaticity green,
                              Chromaticity blue, const Spectrum &illuminant,
                              const RGBToSpectrumTable &table)
-    : name_(std::move(name)), red_(red), green_(green), blue_(blue), illuminant_(illuminant),
+    : name_(std::move(name)),
+      red_(red),
+      green_(green),
+      blue_(blue),
+      illuminant_(illuminant),
       whitepoint_(spectrum_to_xyz(illuminant)),
       xyz_from_rgb_(rgb_to_xyz_matrix(red, green, blue, whitepoint_)),
-      rgb_from_xyz_(xyz_from_rgb_.inverse()), table_(&table) {}
+      rgb_from_xyz_(xyz_from_rgb_.inverse()),
+      table_(&table) {}
 
 SigmoidPolynomial RGBColorSpace::to_coefficients(const RGB &rgb) const {
-    RGB clamped{std::clamp(rgb.r, 0.f, 1.f), std::clamp(rgb.g, 0.f, 1.f), std::clamp(rgb.b, 0.f, 1.f)};
+    RGB clamped{std::clamp(rgb.r, 0.f, 1.f), std::clamp(rgb.g, 0.f, 1.f),
+                std::clamp(rgb.b, 0.f, 1.f)};
     return (*table_)(clamped);
 }
 
@@ -28,7 +34,8 @@ namespace {
 struct StandardColorSpace {
     StandardColorSpace(const ColorSpaceDefinition &def, const RGBToSpectrumTableData &data,
                        const Spectrum &illuminant)
-        : table(data), space(std::string(def.name), def.red, def.green, def.blue, illuminant, table) {}
+        : table(data),
+          space(std::string(def.name), def.red, def.green, def.blue, illuminant, table) {}
     RGBToSpectrumTable table;
     RGBColorSpace space;
 };

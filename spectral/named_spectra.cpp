@@ -10,7 +10,8 @@ namespace caustica {
 
 namespace {
 
-template <typename S> std::shared_ptr<S> normalized(std::shared_ptr<S> illuminant) {
+template <typename S>
+std::shared_ptr<S> normalized(std::shared_ptr<S> illuminant) {
     illuminant->scale(CIE_Y_integral / inner_product_y(*illuminant));
     return illuminant;
 }
@@ -50,7 +51,8 @@ std::map<std::string, SpectrumPtr> build_named_spectra() {
     spectra["metal-TiO2-eta"] = measured(md::titanium_dioxide_lambda, md::titanium_dioxide_eta);
     spectra["metal-TiO2-k"] = measured(md::titanium_dioxide_lambda, md::titanium_dioxide_k);
 
-    spectra["stdillum-A"] = normalized(std::make_shared<DenselySampledSpectrum>(cie_illuminant_a()));
+    spectra["stdillum-A"] =
+        normalized(std::make_shared<DenselySampledSpectrum>(cie_illuminant_a()));
     // D50 and D65 are CIE daylight at 5000 K and 6500 K on the temperature scale of their
     // definition; the D65 table is used as published, D50 from the daylight formula (its table
     // is that formula's output).

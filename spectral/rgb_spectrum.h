@@ -12,7 +12,9 @@ class RGBAlbedoSpectrum final : public Spectrum {
   public:
     RGBAlbedoSpectrum(const RGBColorSpace &cs, const RGB &rgb) : rsp_(cs.to_coefficients(rgb)) {}
     float operator()(float lambda) const override { return rsp_(lambda); }
-    SampledSpectrum sample(const SampledWavelengths &lambda) const override { return rsp_.sample(lambda); }
+    SampledSpectrum sample(const SampledWavelengths &lambda) const override {
+        return rsp_.sample(lambda);
+    }
     float max_value() const override { return rsp_.max_value(); }
 
   private:
@@ -47,7 +49,9 @@ class RGBIlluminantSpectrum final : public Spectrum {
     SampledSpectrum sample(const SampledWavelengths &lambda) const override {
         return rsp_.sample(lambda) * illuminant_->sample(lambda) * scale_;
     }
-    float max_value() const override { return scale_ * rsp_.max_value() * illuminant_->max_value(); }
+    float max_value() const override {
+        return scale_ * rsp_.max_value() * illuminant_->max_value();
+    }
     // The colour space's illuminant alone. Lights normalise photometric power with it rather
     // than with the whole spectrum, as pbrt-v4 does, so an RGB light's colour does not change
     // its brightness setting.

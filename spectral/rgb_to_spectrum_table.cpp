@@ -30,7 +30,8 @@ SigmoidPolynomial RGBToSpectrumTable::operator()(const RGB &rgb) const {
 
     auto entry = [&](int k, int j, int i) {
         size_t n = size_t(resolution_);
-        return coefficients_ + 3 * (((size_t(largest) * n + size_t(k)) * n + size_t(j)) * n + size_t(i));
+        return coefficients_ +
+               3 * (((size_t(largest) * n + size_t(k)) * n + size_t(j)) * n + size_t(i));
     };
     float c[3];
     for (int m = 0; m < 3; ++m) {

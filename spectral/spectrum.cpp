@@ -11,8 +11,9 @@ PiecewiseLinearSpectrum::PiecewiseLinearSpectrum(std::span<const float> lambdas,
                                                  std::span<const float> values)
     : lambdas_(lambdas.begin(), lambdas.end()), values_(values.begin(), values.end()) {
     if (lambdas_.size() != values_.size())
-        throw std::invalid_argument("piecewise-linear spectrum: " + std::to_string(lambdas_.size()) +
-                                    " wavelengths but " + std::to_string(values_.size()) + " values");
+        throw std::invalid_argument(
+            "piecewise-linear spectrum: " + std::to_string(lambdas_.size()) + " wavelengths but " +
+            std::to_string(values_.size()) + " values");
     for (size_t i = 1; i < lambdas_.size(); ++i)
         if (!(lambdas_[i - 1] < lambdas_[i]))
             throw std::invalid_argument("piecewise-linear spectrum: wavelengths must increase (" +
@@ -20,8 +21,8 @@ PiecewiseLinearSpectrum::PiecewiseLinearSpectrum(std::span<const float> lambdas,
                                         std::to_string(lambdas_[i]) + ")");
 }
 
-std::shared_ptr<PiecewiseLinearSpectrum>
-PiecewiseLinearSpectrum::from_interleaved(std::span<const float> pairs, bool normalize) {
+std::shared_ptr<PiecewiseLinearSpectrum> PiecewiseLinearSpectrum::from_interleaved(
+    std::span<const float> pairs, bool normalize) {
     if (pairs.size() % 2 != 0)
         throw std::invalid_argument("interleaved spectrum: odd number of values (" +
                                     std::to_string(pairs.size()) + ")");
@@ -73,10 +74,10 @@ void DenselySampledSpectrum::scale(float s) {
 float blackbody(float lambda_nm, float temperature_k) {
     if (temperature_k <= 0) return 0;
     // Physical constants as pbrt-v4 uses them (CODATA 2010), so radiances agree with it.
-    constexpr double c = 299792458.;          // speed of light, m/s
-    constexpr double h = 6.62606957e-34;      // Planck constant, J s
-    constexpr double kb = 1.3806488e-23;      // Boltzmann constant, J/K
-    double l = double(lambda_nm) * 1e-9;      // metres
+    constexpr double c = 299792458.;      // speed of light, m/s
+    constexpr double h = 6.62606957e-34;  // Planck constant, J s
+    constexpr double kb = 1.3806488e-23;  // Boltzmann constant, J/K
+    double l = double(lambda_nm) * 1e-9;  // metres
     double l5 = (l * l) * (l * l) * l;
     return float((2 * h * c * c) / (l5 * std::expm1((h * c) / (l * kb * temperature_k))));
 }

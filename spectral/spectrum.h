@@ -3,7 +3,6 @@
 
 #include "spectral/sampled_wavelengths.h"
 
-#include <cmath>
 #include <memory>
 #include <span>
 #include <vector>
@@ -32,7 +31,9 @@ class ConstantSpectrum final : public Spectrum {
   public:
     explicit ConstantSpectrum(float c) : c_(c) {}
     float operator()(float) const override { return c_; }
-    SampledSpectrum sample(const SampledWavelengths &) const override { return SampledSpectrum(c_); }
+    SampledSpectrum sample(const SampledWavelengths &) const override {
+        return SampledSpectrum(c_);
+    }
     float max_value() const override { return c_; }
     bool is_constant() const override { return true; }
 
@@ -48,7 +49,7 @@ class PiecewiseLinearSpectrum final : public Spectrum {
     // From interleaved pairs; if normalize, scaled so that its CIE Y integral equals CIE_Y_integral
     // (how pbrt normalises illuminant spectra).
     static std::shared_ptr<PiecewiseLinearSpectrum> from_interleaved(std::span<const float> pairs,
-                                                                      bool normalize);
+                                                                     bool normalize);
     float operator()(float lambda) const override;
     float max_value() const override;
     void scale(float s);
@@ -73,9 +74,9 @@ class DenselySampledSpectrum final : public Spectrum {
 
   private:
     float lookup(float lambda) const {
-        int offset = int(std::lround(lambda)) - int(LambdaMin);
-        if (offset < 0 || offset >= int(values_.size())) return 0;
-        return values_[offset];
+        // Rounds to the nearest nm without a libm call; the range test also rejects NaN.
+        if (!(lambda >= LambdaMin - 0.5f && lambda < LambdaMax + 0.5f)) return 0;
+        return values_[size_t(lambda - LambdaMin + 0.5f)];
     }
     std::vector<float> values_;
 };

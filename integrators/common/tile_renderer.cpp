@@ -30,16 +30,16 @@ struct Tile {
 
 struct ThreadState {
     std::unique_ptr<Sampler> sampler;
-    ScratchBuffer scratch;
+    std::unique_ptr<ScratchBuffer> scratch = std::make_unique<ScratchBuffer>();
     uint64_t rays = 0;
     uint64_t non_finite = 0;
 };
 
-std::vector<Tile> make_tiles(Vec2i res) {
+std::vector<Tile> make_tiles(const PixelBounds &bounds) {
     std::vector<Tile> tiles;
-    for (int y = 0; y < res.y; y += kTileSize)
-        for (int x = 0; x < res.x; x += kTileSize)
-            tiles.push_back({{x, y}, {std::min(x + kTileSize, res.x), std::min(y + kTileSize, res.y)}});
+    for (int y = bounds.min.y; y < bounds.max.y; y += kTileSize)
+        for (int x = bounds.min.x; x < bounds.max.x; x += kTileSize)
+            tiles.push_back({{x, y}, {std::min(x + kTileSize, bounds.max.x), std::min(y + kTileSize, bounds.max.y)}});
     return tiles;
 }
 
@@ -48,8 +48,8 @@ std::vector<Tile> make_tiles(Vec2i res) {
 void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                   const ProgressCallback &progress, const RadianceFunction &radiance) {
     Film &film = *scene.film;
-    const std::vector<Tile> tiles = make_tiles(film.resolution());
-    const uint64_t pixel_count = uint64_t(film.resolution().x) * film.resolution().y;
+    const std::vector<Tile> tiles = make_tiles(film.pixel_bounds());
+    const uint64_t pixel_count = uint64_t(film.pixel_bounds().width()) * film.pixel_bounds().height();
     const bool timed = budget.seconds > 0;
     const int spp_cap = budget.spp > 0 ? budget.spp : (timed ? INT_MAX : 1);
     const auto start = std::chrono::steady_clock::now();
@@ -90,7 +90,7 @@ void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &s
                         CameraSample cs = get_camera_sample(sampler, pixel, film.filter());
                         SampledSpectrum L;
                         if (auto ray = scene.camera->generate_ray(cs, lambda)) {
-                            L = radiance(*ray, lambda, sampler, ts.scratch, ts.rays) * ray->weight;
+                            L = radiance(*ray, lambda, sampler, *ts.scratch, ts.rays) * ray->weight;
                             // A non-finite value is a bug to fix at its source; it is counted
                             // (reported in the stats) and never reaches the film.
                             if (L.has_non_finite()) {
@@ -99,7 +99,7 @@ void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &s
                             }
                         }
                         film.add_sample(pixel, L, lambda, cs.filter_weight);
-                        ts.scratch.reset();
+                        ts.scratch->reset();
                     }
                 }
             uint64_t n = ++tiles_done;

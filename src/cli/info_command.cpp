@@ -1,5 +1,5 @@
 #include "cli/commands.h"
-#include "parser/parser.h"
+#include "parser/scene_description.h"
 #include "scene/scene.h"
 
 #include <cstdio>

@@ -2,7 +2,8 @@
 #include "cli/progress_reporter.h"
 #include "core/error.h"
 #include "integrators/integrator.h"
-#include "parser/parser.h"
+#include "film/image_io.h"
+#include "parser/scene_description.h"
 #include "scene/scene.h"
 
 #include <tbb/global_control.h>

@@ -3,8 +3,7 @@
 
 #include "core/vecmath.h"
 
-#include <bit>
-#include <cstring>
+#include <cmath>
 
 namespace caustica {
 
@@ -14,27 +13,27 @@ struct Ray {
     Vec3f at(float t) const { return o + d * t; }
 };
 
-// Moves p off the surface along the geometric normal n, to the side of direction w, by a few
-// hundred ulps of p's coordinates (Wächter and Binder 2019, "A Fast and Robust Method for
-// Avoiding Self-Intersection", Ray Tracing Gems ch. 6). The offset scales with the magnitude of
-// p, so it holds at large coordinates; near the origin a small absolute offset takes over.
+// Moves p off the surface along the geometric normal n, to the side of direction w, by more than
+// the rounding error p can carry. That error grows with the magnitude of the coordinates (p is
+// interpolated from vertices, or reprojected and transformed), so the offset is 2^-15 (256 to
+// 512 ulps) of the largest coordinate, and 2^-16 near the origin. Moving exactly along n, rather
+// than by a number of ulps per axis as Wachter and Binder 2019 (Ray Tracing Gems ch. 6) do, keeps
+// the offset parallel to the surface's neighbours: per-axis ulps differ when coordinates differ in
+// magnitude, and the tilted offset then pushes origins near a concave edge through the adjacent
+// wall. The rounded result is nudged one more ulp away from the surface per axis, as in
+// pbrt-v3/v4 (Pharr et al., "Physically Based Rendering", section 3.9.5).
 // p must be computed on the surface (barycentric interpolation or reprojection), not as o + t d.
 inline Vec3f offset_ray_origin(Vec3f p, Vec3f n, Vec3f w) {
-    constexpr float origin = 1.0f / 32.0f;
-    constexpr float float_scale = 1.0f / 65536.0f;
-    constexpr float int_scale = 256.0f;
+    constexpr float relative_offset = 0x1p-15f;
+    constexpr float min_offset = 0x1p-16f;
+    float offset = std::max(min_offset, relative_offset * max_component(abs(p)));
     if (dot(n, w) < 0) n = -n;
-    Vec3f r;
+    Vec3f o = p + n * offset;
     for (int i = 0; i < 3; ++i) {
-        int of = int(int_scale * n[i]);
-        int32_t bits;
-        std::memcpy(&bits, &p[i], sizeof(float));
-        bits += (p[i] < 0) ? -of : of;
-        float pi;
-        std::memcpy(&pi, &bits, sizeof(float));
-        r[i] = std::abs(p[i]) < origin ? p[i] + float_scale * n[i] : pi;
+        if (n[i] > 0) o[i] = std::nextafter(o[i], Infinity);
+        else if (n[i] < 0) o[i] = std::nextafter(o[i], -Infinity);
     }
-    return r;
+    return o;
 }
 
 inline Ray spawn_ray(Vec3f p, Vec3f n, Vec3f d) { return {offset_ray_origin(p, n, d), d, Infinity}; }

@@ -52,12 +52,7 @@ Bounds3f Sphere::bounds() const {
     return render_bounds({-radius_, -radius_, z_min_}, {radius_, radius_, z_max_});
 }
 
-Vec3d Sphere::project_to_surface(Vec3d p) const {
-    p = p * (radius_ / length(p));
-    // At the poles phi is undefined; nudge as pbrt does so that dpdu does not vanish.
-    if (p.x == 0 && p.y == 0) p.x = 1e-5 * radius_;
-    return p;
-}
+Vec3d Sphere::project_to_surface(Vec3d p) const { return p * (radius_ / length(p)); }
 
 Vec2f Sphere::uv_of(Vec3d p) const {
     double phi = std::atan2(p.y, p.x);
@@ -108,11 +103,15 @@ std::optional<float> Sphere::intersect_t(Vec3f o, Vec3f d, float t_max) const {
 
 SurfaceInteraction Sphere::interaction(const Ray &ray, float t) const {
     Vec3d p = project_to_surface(object_point(ray.o) + object_vector(ray.d) * double(t));
-    double phi = std::atan2(p.y, p.x);
+    // At the poles phi is undefined and dp/du vanishes; like pbrt, take the derivatives a hair
+    // off the pole (the point itself stays exact).
+    double x = p.x, y = p.y;
+    if (x == 0 && y == 0) x = 1e-5 * radius_;
+    double phi = std::atan2(y, x);
     if (phi < 0) phi += TwoPi;
     double theta = std::acos(std::clamp(p.z / radius_, -1.0, 1.0));
-    double z_radius = std::sqrt(p.x * p.x + p.y * p.y);
-    double cos_phi = p.x / z_radius, sin_phi = p.y / z_radius;
+    double z_radius = std::sqrt(x * x + y * y);
+    double cos_phi = x / z_radius, sin_phi = y / z_radius;
     double theta_range = theta_z_max_ - theta_z_min_;
 
     SurfaceInteraction si;
@@ -120,7 +119,7 @@ SurfaceInteraction Sphere::interaction(const Ray &ray, float t) const {
     si.n = render_normal(p / radius_);
     si.uv = {float(phi / phi_max_), float((theta - theta_z_min_) / theta_range)};
     si.wo = -normalize(ray.d);
-    si.dpdu = render_vector(Vec3d{-phi_max_ * p.y, phi_max_ * p.x, 0});
+    si.dpdu = render_vector(Vec3d{-phi_max_ * y, phi_max_ * x, 0});
     si.dpdv = render_vector(Vec3d{p.z * cos_phi, p.z * sin_phi, -radius_ * std::sin(theta)} *
                             theta_range);
     si.shading.n = si.n;

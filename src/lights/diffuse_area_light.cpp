@@ -6,8 +6,11 @@ namespace caustica {
 
 DiffuseAreaLight::DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumPtr radiance,
                                    float scale, bool two_sided)
-    : shape_(std::move(shape)), area_(shape_->area()), radiance_(std::move(radiance)),
-      scale_(scale), two_sided_(two_sided) {}
+    : shape_(std::move(shape)),
+      area_(shape_->area()),
+      radiance_(std::move(radiance)),
+      scale_(scale),
+      two_sided_(two_sided) {}
 
 SampledSpectrum DiffuseAreaLight::phi(const SampledWavelengths &lambda) const {
     // Constant radiance integrated over the hemisphere (pi) and the area, per emitting side.
@@ -77,4 +80,4 @@ void DiffuseAreaLight::pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pd
                           : std::max(0.f, cosine_hemisphere_pdf(cos_t));
 }
 
-} // namespace caustica
+}  // namespace caustica

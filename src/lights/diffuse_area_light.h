@@ -37,4 +37,4 @@ class DiffuseAreaLight final : public Light {
     bool two_sided_;
 };
 
-} // namespace caustica
+}  // namespace caustica

@@ -3,7 +3,8 @@
 namespace caustica {
 
 DistantLight::DistantLight(const Transform &render_from_light, SpectrumPtr radiance, float scale)
-    : w_(normalize(render_from_light.apply_vector({0, 0, 1}))), radiance_(std::move(radiance)),
+    : w_(normalize(render_from_light.apply_vector({0, 0, 1}))),
+      radiance_(std::move(radiance)),
       scale_(scale) {}
 
 void DistantLight::preprocess(const Bounds3f &scene_bounds) {
@@ -36,13 +37,13 @@ std::optional<LightLeSample> DistantLight::sample_le(Vec2f u1, Vec2f,
     s.ray = scene_.ray_into(-w_, u1);
     s.L = scale_ * radiance_->sample(lambda);
     s.pdf_pos = scene_.disk_pdf();
-    s.pdf_dir = 1; // the one possible direction, chosen with probability 1
+    s.pdf_dir = 1;  // the one possible direction, chosen with probability 1
     return s;
 }
 
 void DistantLight::pdf_le(const Ray &, Vec3f, float *pdf_pos, float *pdf_dir) const {
     *pdf_pos = scene_.disk_pdf();
-    *pdf_dir = 0; // a single direction cannot be hit by chance
+    *pdf_dir = 0;  // a single direction cannot be hit by chance
 }
 
-} // namespace caustica
+}  // namespace caustica

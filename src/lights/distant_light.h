@@ -34,4 +34,4 @@ class DistantLight final : public Light {
     SceneSphere scene_;
 };
 
-} // namespace caustica
+}  // namespace caustica

@@ -25,7 +25,7 @@ inline Vec3f equal_area_square_to_sphere(Vec2f p) {
     float z = std::copysign(1 - r * r, signed_distance);
     float cos_phi = std::copysign(std::cos(phi), u);
     float sin_phi = std::copysign(std::sin(phi), v);
-    float s = r * safe_sqrt(2 - r * r); // sin(theta), since sin^2 = 1 - (1 - r^2)^2
+    float s = r * safe_sqrt(2 - r * r);  // sin(theta), since sin^2 = 1 - (1 - r^2)^2
     return {cos_phi * s, sin_phi * s, z};
 }
 
@@ -48,4 +48,4 @@ inline Vec2f equal_area_sphere_to_square(Vec3f d) {
     return {clamp(0.5f * (u + 1), 0.f, 1.f), clamp(0.5f * (v + 1), 0.f, 1.f)};
 }
 
-} // namespace caustica
+}  // namespace caustica

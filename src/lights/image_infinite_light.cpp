@@ -35,13 +35,17 @@ Vec3f mapping_direction(EnvironmentMapping mapping, Vec2f uv) {
     return spherical_direction(std::sin(theta), std::cos(theta), phi);
 }
 
-} // namespace
+}  // namespace
 
 ImageInfiniteLight::ImageInfiniteLight(const Transform &render_from_light, RGBImage image,
-                                       EnvironmentMapping mapping,
-                                       const RGBColorSpace &color_space, float scale)
-    : render_from_light_(render_from_light), light_from_render_(render_from_light.inverse()),
-      image_(std::move(image)), mapping_(mapping), color_space_(&color_space), scale_(scale) {
+                                       EnvironmentMapping mapping, const RGBColorSpace &color_space,
+                                       float scale)
+    : render_from_light_(render_from_light),
+      light_from_render_(render_from_light.inverse()),
+      image_(std::move(image)),
+      mapping_(mapping),
+      color_space_(&color_space),
+      scale_(scale) {
     if (mapping_ == EnvironmentMapping::EqualArea && image_.width != image_.height)
         throw std::invalid_argument("an equal-area environment map must be square");
     if (mapping_ == EnvironmentMapping::Equirectangular && image_.width != 2 * image_.height)
@@ -166,10 +170,9 @@ float ImageInfiniteLight::pbrt_illuminance_normalization(const RGBImage &image,
     for (int y = 0; y < image.height; ++y) {
         float v = (y + 0.5f) / image.height;
         // Half of each pixel's solid angle (see the header).
-        float half_solid_angle =
-            mapping == EnvironmentMapping::EqualArea
-                ? 2 * Pi / (float(image.width) * image.height)
-                : equirect_pixel_solid_angle(y, image.width, image.height) / 2;
+        float half_solid_angle = mapping == EnvironmentMapping::EqualArea
+                                     ? 2 * Pi / (float(image.width) * image.height)
+                                     : equirect_pixel_solid_angle(y, image.width, image.height) / 2;
         for (int x = 0; x < image.width; ++x) {
             Vec3f w = mapping_direction(mapping, {(x + 0.5f) / image.width, v});
             if (w.z <= 0) continue;
@@ -179,4 +182,4 @@ float ImageInfiniteLight::pbrt_illuminance_normalization(const RGBImage &image,
     return float(sum);
 }
 
-} // namespace caustica
+}  // namespace caustica

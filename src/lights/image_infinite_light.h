@@ -69,4 +69,4 @@ class ImageInfiniteLight final : public Light {
     SceneSphere scene_;
 };
 
-} // namespace caustica
+}  // namespace caustica

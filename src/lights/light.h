@@ -67,7 +67,10 @@ class Light {
     }
 
     // Emitted-ray sampling for light paths; pdf_pos is per area (or per unit of the disk
-    // perpendicular to a distant/infinite light), pdf_dir per solid angle.
+    // perpendicular to a distant/infinite light), pdf_dir per solid angle. As in pbrt-v4, the
+    // delta part of a delta light is 1 in sample_le (the one position or direction, chosen with
+    // certainty) but 0 in pdf_le (a given ray cannot hit it by chance). For area lights, pdf_le
+    // takes the ray leaving a point on the light (ray.o) and that point's normal n.
     virtual std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2,
                                                    const SampledWavelengths &lambda) const = 0;
     virtual void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const = 0;

@@ -31,8 +31,7 @@ PowerLightSampler::PowerLightSampler(const std::vector<LightPtr> &lights) {
     for (const LightPtr &l : lights) {
         SampledSpectrum phi = l->phi(lambda);
         float sum = 0;
-        for (int i = 0; i < NumWavelengths; ++i)
-            sum += phi[i] / visible_wavelengths_pdf(lambda[i]);
+        for (int i = 0; i < NumWavelengths; ++i) sum += phi[i] / visible_wavelengths_pdf(lambda[i]);
         power.push_back(std::isfinite(sum) ? std::max(0.f, sum / NumWavelengths) : 0.f);
         index_.emplace(l.get(), int(lights_.size()));
         lights_.push_back(l.get());
@@ -53,4 +52,4 @@ float PowerLightSampler::pmf(const Light *light) const {
     return it == index_.end() ? 0.f : distribution_.pmf(it->second);
 }
 
-} // namespace caustica
+}  // namespace caustica

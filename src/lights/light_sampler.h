@@ -52,4 +52,4 @@ class PowerLightSampler final : public LightSampler {
     DiscreteDistribution distribution_;
 };
 
-} // namespace caustica
+}  // namespace caustica

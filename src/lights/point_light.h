@@ -29,4 +29,4 @@ class PointLight final : public Light {
     float scale_;
 };
 
-} // namespace caustica
+}  // namespace caustica

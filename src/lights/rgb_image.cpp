@@ -1,7 +1,6 @@
 #include "lights/rgb_image.h"
 
 #include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <stdexcept>
 
@@ -20,7 +19,7 @@ bool is_float_format(OIIO::TypeDesc t) {
            t.basetype == OIIO::TypeDesc::DOUBLE;
 }
 
-} // namespace
+}  // namespace
 
 RGBImage read_rgb_image(const std::string &filename) {
     auto in = OIIO::ImageInput::open(filename);
@@ -42,8 +41,8 @@ RGBImage read_rgb_image(const std::string &filename) {
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, data.data()))
         throw std::runtime_error("cannot read image \"" + filename + "\": " + in->geterror());
     std::string color_space = spec.get_string_attribute("oiio:ColorSpace");
-    bool decode_srgb = !is_float_format(spec.format) && color_space != "Linear" &&
-                       color_space != "linear";
+    bool decode_srgb =
+        !is_float_format(spec.format) && color_space != "Linear" && color_space != "linear";
 
     RGBImage image;
     image.width = spec.width;
@@ -61,4 +60,4 @@ RGBImage read_rgb_image(const std::string &filename) {
     return image;
 }
 
-} // namespace caustica
+}  // namespace caustica

@@ -8,7 +8,7 @@ namespace caustica {
 
 struct RGBImage {
     int width = 0, height = 0;
-    std::vector<float> pixels; // 3 floats per pixel, rows from the top of the image down
+    std::vector<float> pixels;  // 3 floats per pixel, rows from the top of the image down
 
     const float *at(int x, int y) const { return &pixels[3 * (size_t(y) * width + x)]; }
     float *at(int x, int y) { return &pixels[3 * (size_t(y) * width + x)]; }
@@ -19,4 +19,4 @@ struct RGBImage {
 // std::runtime_error with a reason (unreadable file, no R/G/B channels, NaN or infinite values).
 RGBImage read_rgb_image(const std::string &filename);
 
-} // namespace caustica
+}  // namespace caustica

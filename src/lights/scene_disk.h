@@ -32,4 +32,4 @@ struct SceneSphere {
     }
 };
 
-} // namespace caustica
+}  // namespace caustica

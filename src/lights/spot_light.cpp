@@ -23,7 +23,10 @@ float sample_smooth_step(float u, float a, float b) {
     for (int i = 0; i < 30; ++i) {
         float f = 2 * t * t * t - t * t * t * t - u;
         if (std::abs(f) < 1e-7f) break;
-        if (f < 0) lo = t; else hi = t;
+        if (f < 0)
+            lo = t;
+        else
+            hi = t;
         float df = 6 * t * t - 4 * t * t * t;
         float next = df > 0 ? t - f / df : -1.f;
         t = (next > lo && next < hi) ? next : 0.5f * (lo + hi);
@@ -33,9 +36,12 @@ float sample_smooth_step(float u, float a, float b) {
 
 SpotLight::SpotLight(const Transform &render_from_light, SpectrumPtr intensity, float scale,
                      float total_width_degrees, float falloff_start_degrees)
-    : render_from_light_(render_from_light), light_from_render_(render_from_light.inverse()),
-      position_(render_from_light.apply_point({0, 0, 0})), intensity_(std::move(intensity)),
-      scale_(scale), cos_falloff_end_(std::cos(radians(total_width_degrees))),
+    : render_from_light_(render_from_light),
+      light_from_render_(render_from_light.inverse()),
+      position_(render_from_light.apply_point({0, 0, 0})),
+      intensity_(std::move(intensity)),
+      scale_(scale),
+      cos_falloff_end_(std::cos(radians(total_width_degrees))),
       cos_falloff_start_(std::cos(radians(falloff_start_degrees))) {}
 
 SampledSpectrum SpotLight::intensity(Vec3f w_light, const SampledWavelengths &lambda) const {
@@ -72,7 +78,7 @@ std::optional<LightLeSample> SpotLight::sample_le(Vec2f u1, Vec2f u2,
     // Choose the cone or the falloff ring in proportion to their power, then sample the
     // direction within it: uniformly in the cone, by the smoothstep profile in the ring.
     float total = cone_weight() + falloff_weight();
-    if (!(total > 0)) return {}; // a zero-width spot emits nothing
+    if (!(total > 0)) return {};  // a zero-width spot emits nothing
     float p_cone = cone_weight() / total;
     Vec3f w_light;
     float pdf_dir;
@@ -83,8 +89,8 @@ std::optional<LightLeSample> SpotLight::sample_le(Vec2f u1, Vec2f u2,
         float cos_t = sample_smooth_step(u1.x, cos_falloff_end_, cos_falloff_start_);
         float sin_t = safe_sqrt(1 - cos_t * cos_t);
         w_light = spherical_direction(sin_t, cos_t, 2 * Pi * u1.y);
-        pdf_dir = smooth_step_pdf(cos_t, cos_falloff_end_, cos_falloff_start_) * (1 - p_cone) /
-                  (2 * Pi);
+        pdf_dir =
+            smooth_step_pdf(cos_t, cos_falloff_end_, cos_falloff_start_) * (1 - p_cone) / (2 * Pi);
     }
     if (pdf_dir == 0) return {};
     LightLeSample s;
@@ -109,4 +115,4 @@ void SpotLight::pdf_le(const Ray &ray, Vec3f, float *pdf_pos, float *pdf_dir) co
             smooth_step_pdf(cos_t, cos_falloff_end_, cos_falloff_start_) * (1 - p_cone) / (2 * Pi);
 }
 
-} // namespace caustica
+}  // namespace caustica

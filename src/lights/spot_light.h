@@ -46,4 +46,4 @@ float smooth_step(float x, float a, float b);
 float smooth_step_pdf(float x, float a, float b);
 float sample_smooth_step(float u, float a, float b);
 
-} // namespace caustica
+}  // namespace caustica

@@ -51,4 +51,4 @@ void UniformInfiniteLight::pdf_le(const Ray &, Vec3f, float *pdf_pos, float *pdf
     *pdf_dir = uniform_sphere_pdf();
 }
 
-} // namespace caustica
+}  // namespace caustica

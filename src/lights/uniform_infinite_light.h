@@ -28,4 +28,4 @@ class UniformInfiniteLight final : public Light {
     SceneSphere scene_;
 };
 
-} // namespace caustica
+}  // namespace caustica

@@ -32,7 +32,8 @@ class DielectricBxDF final : public BxDF {
     // rough model's half vector robust near eta = 1.
     static constexpr float IndexMatchedTolerance = 1e-4f;
     // Rough transmission through a dispersive eta keeps the secondary wavelengths (each lane
-    // evaluates f exactly with its own half vector) unless the lobe is narrower than this alpha.
+    // evaluates f exactly with its own half vector) unless the lobe is narrower than this alpha
+    // (the larger of alpha_x and alpha_y).
     // The reason is variance, not bias: the secondaries are estimated with the hero's sampling
     // density, and their refracted lobes are offset from the hero's by the angular dispersion,
     // roughly delta_n * tan(theta) -- up to about 0.05 rad for dense flint glass over the

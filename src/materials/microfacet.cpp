@@ -4,9 +4,10 @@ namespace caustica {
 
 TrowbridgeReitzDistribution::TrowbridgeReitzDistribution(float alpha_x, float alpha_y)
     : alpha_x_(alpha_x), alpha_y_(alpha_y) {
-    // An exact zero would make D a 0/0; materials route such surfaces to the smooth models, and
-    // the clamp keeps direct users of the distribution finite.
-    if (!effectively_smooth()) return;
+    // Smooth surfaces never evaluate D (their BxDFs use the specular models). A rough surface
+    // may still be smooth along one axis, where alpha = 0 would make D a 0/0: the floor keeps
+    // such anisotropic lobes finite, and at 1e-4 it is far below what a render resolves.
+    if (effectively_smooth()) return;
     alpha_x_ = std::max(alpha_x_, 1e-4f);
     alpha_y_ = std::max(alpha_y_, 1e-4f);
 }

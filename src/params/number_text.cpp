@@ -14,9 +14,14 @@ NumberTextStatus parse_number_text(std::string_view text, double *value) {
     if (text.empty()) return NumberTextStatus::NotANumber;
     // Spelt-out non-finite values ("nan", "-inf", "Infinity") get their own status for a
     // clearer message; from_chars would otherwise accept them.
-    std::string lower(text[0] == '-' ? text.substr(1) : text);
-    for (char &ch : lower) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    if (lower == "nan" || lower == "inf" || lower == "infinity") return NumberTextStatus::NotFinite;
+    std::string_view unsigned_text = text[0] == '-' ? text.substr(1) : text;
+    if (!unsigned_text.empty() && std::isalpha(static_cast<unsigned char>(unsigned_text[0]))) {
+        std::string lower(unsigned_text);
+        for (char &ch : lower) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+        if (lower == "nan" || lower == "inf" || lower == "infinity")
+            return NumberTextStatus::NotFinite;
+        return NumberTextStatus::NotANumber;
+    }
     // Only digits, a sign and '.' may start a number.
     char c = text[0];
     if (!((c >= '0' && c <= '9') || c == '.' || c == '-')) return NumberTextStatus::NotANumber;

@@ -8,8 +8,8 @@
 #include "parser/tokenizer.h"
 #include "spectral/color_space.h"
 
-#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -70,25 +70,15 @@ struct Source {
     size_t pushed_depth_at_import = 0;
 };
 
+struct FinishedImport {
+    GraphicsState state;  // the importer's, to restore
+    size_t pushed_depth;  // AttributeBegin depth at the Import
+};
+
 struct NameReference {
     std::string name;
     SourceLocation loc;
 };
-
-const std::set<std::string, std::less<>> &directive_names() {
-    static const std::set<std::string, std::less<>> names = {
-        "Accelerator",       "ActiveTransform",   "AreaLightSource",  "Attribute",
-        "AttributeBegin",    "AttributeEnd",      "Camera",           "ColorSpace",
-        "ConcatTransform",   "CoordinateSystem",  "CoordSysTransform", "Film",
-        "Identity",          "Import",            "Include",          "Integrator",
-        "LightSource",       "LookAt",            "MakeNamedMaterial", "MakeNamedMedium",
-        "Material",          "MediumInterface",   "NamedMaterial",    "ObjectBegin",
-        "ObjectEnd",         "ObjectInstance",    "Option",           "PixelFilter",
-        "ReverseOrientation", "Rotate",           "Sampler",          "Scale",
-        "Shape",             "Texture",           "Transform",        "TransformBegin",
-        "TransformEnd",      "TransformTimes",    "Translate",        "WorldBegin"};
-    return names;
-}
 
 class SceneParser {
   public:
@@ -125,6 +115,7 @@ class SceneParser {
     void parse() {
         while (true) {
             Token tok = next();
+            if (!finished_imports_.empty()) apply_finished_imports();
             if (tok.kind == Token::Kind::End) break;
             if (tok.kind != Token::Kind::Word) {
                 if (tok.kind == Token::Kind::String)
@@ -133,6 +124,9 @@ class SceneParser {
             }
             auto it = handlers().find(tok.text);
             if (it == handlers().end()) {
+                if (tok.text == "WorldEnd")
+                    error(tok, "unknown directive 'WorldEnd' (pbrt-v4 has no WorldEnd: the world "
+                               "block runs to the end of the input; delete it)");
                 double v;
                 if (parse_number_text(tok.text, &v) != NumberTextStatus::NotANumber)
                     error(tok, "unexpected number " + tok.describe() +
@@ -213,15 +207,31 @@ class SceneParser {
 
     void unget(Token tok) { pending_ = std::move(tok); }
 
+    // The next token, left in place (for error locations of arguments read afterwards).
+    Token peek() {
+        Token tok = next();
+        unget(tok);
+        return tok;
+    }
+
     void end_of_source() {
         Source &s = sources_.back();
-        if (s.state_after_import) {
-            if (pushed_.size() > s.pushed_depth_at_import)
+        if (s.state_after_import)
+            finished_imports_.push_back({std::move(*s.state_after_import), s.pushed_depth_at_import});
+        sources_.pop_back();
+    }
+
+    // Restores the importer's graphics state after an imported file. This waits until the
+    // directive being parsed is complete: the look-ahead for more of its parameters is what
+    // reaches the end of the file, and the directive must still see the imported file's state.
+    void apply_finished_imports() {
+        for (FinishedImport &f : finished_imports_) {
+            if (pushed_.size() > f.pushed_depth)
                 throw InputError(pushed_.back().loc,
                                  "AttributeBegin in an imported file is not closed in that file");
-            state_ = std::move(*s.state_after_import);
+            state_ = std::move(f.state);
         }
-        sources_.pop_back();
+        finished_imports_.clear();
         // The floor of the innermost import still being read applies again.
         attribute_floor_ = 0;
         for (const Source &src : sources_)
@@ -238,7 +248,7 @@ class SceneParser {
     }
 
     static bool is_directive_word(const Token &tok) {
-        return tok.kind == Token::Kind::Word && directive_names().count(tok.text) != 0;
+        return tok.kind == Token::Kind::Word && handlers().count(tok.text) != 0;
     }
 
     // ---- Directive arguments ---------------------------------------------------------------
@@ -301,40 +311,49 @@ class SceneParser {
 
     // ---- Parameter lists ---------------------------------------------------------------------
 
-    void add_value(ParsedParameter &p, const Token &t) {
-        const std::string &type = p.type;
-        if (type == "bool") {
+    // What tokens a parameter type takes as values.
+    enum class ValueKind { Bool, String, Spectrum, Number, Integer };
+    static ValueKind value_kind(const std::string &type) {
+        if (type == "bool") return ValueKind::Bool;
+        if (type == "string" || type == "texture") return ValueKind::String;
+        if (type == "spectrum") return ValueKind::Spectrum;
+        if (type == "integer") return ValueKind::Integer;
+        return ValueKind::Number;
+    }
+
+    void add_value(ParsedParameter &p, ValueKind kind, const Token &t) {
+        switch (kind) {
+        case ValueKind::Bool:
             if (t.text == "true" || t.text == "false") {
                 p.bools.push_back(t.text == "true");
                 return;
             }
             error(t, "parameter \"" + p.declaration() + "\": expected true or false, found " +
                          t.describe());
-        }
-        if (type == "string" || type == "texture") {
+        case ValueKind::String:
             if (t.kind != Token::Kind::String)
                 error(t, "parameter \"" + p.declaration() + "\": expected a quoted string, found " +
                              t.describe());
             p.strings.push_back(t.text);
             return;
-        }
-        if (type == "spectrum") {
+        case ValueKind::Spectrum:
+            if (t.kind == Token::Kind::String ? !p.numbers.empty() : !p.strings.empty())
+                error(t, "parameter \"" + p.declaration() +
+                             "\": a spectrum is either numbers or one name, not both");
             if (t.kind == Token::Kind::String) {
-                if (!p.numbers.empty())
-                    error(t, "parameter \"" + p.declaration() +
-                                 "\": a spectrum is either numbers or one name, not both");
                 p.strings.push_back(t.text);
                 return;
             }
-            if (!p.strings.empty())
-                error(t, "parameter \"" + p.declaration() +
-                             "\": a spectrum is either numbers or one name, not both");
+            break;
+        case ValueKind::Number:
+        case ValueKind::Integer:
+            break;
         }
         if (t.kind != Token::Kind::Word)
             error(t, "parameter \"" + p.declaration() + "\": expected a number, found " +
                          t.describe());
         double v = number_from(t);
-        if (type == "integer" && (v != std::floor(v) || std::abs(v) > 2147483647.0))
+        if (kind == ValueKind::Integer && (v != std::floor(v) || std::abs(v) > 2147483647.0))
             error(t, "parameter \"" + p.declaration() + "\": " + t.describe() +
                          " is not a 32-bit integer");
         p.numbers.push_back(v);
@@ -372,6 +391,7 @@ class SceneParser {
             p.type = canonical;
             p.name = name;
 
+            ValueKind kind = value_kind(p.type);
             Token value = next();
             if (value.kind == Token::Kind::OpenBracket) {
                 while (true) {
@@ -381,14 +401,14 @@ class SceneParser {
                         error(value, "unbalanced brackets: this '[' is never closed");
                     if (t.kind == Token::Kind::OpenBracket)
                         error(t, "unexpected '[' inside the values of \"" + p.declaration() + "\"");
-                    add_value(p, t);
+                    add_value(p, kind, t);
                 }
             } else if (value.kind == Token::Kind::End || is_directive_word(value)) {
                 error(decl, "parameter \"" + p.declaration() + "\" has no value");
             } else if (value.kind == Token::Kind::CloseBracket) {
                 error(value, "unbalanced brackets: unexpected ']'");
             } else {
-                add_value(p, value);
+                add_value(p, kind, value);
             }
             validate_parameter(p);
             params.push_back(std::move(p));
@@ -473,8 +493,7 @@ class SceneParser {
     }
 
     void attribute(const Token &d) {
-        Token target = next();
-        if (target.kind != Token::Kind::String) unget(target);
+        Token target = peek();
         std::string name = string_argument(d, "attribute target");
         std::vector<ParsedParameter> *defaults = nullptr;
         if (name == "shape") defaults = &state_.shape_defaults;
@@ -534,8 +553,7 @@ class SceneParser {
     }
 
     void color_space(const Token &d) {
-        Token name_tok = next();
-        if (name_tok.kind != Token::Kind::String) unget(name_tok);
+        Token name_tok = peek();
         std::string name = string_argument(d, "colour space name");
         const RGBColorSpace *cs = RGBColorSpace::by_name(name);
         if (!cs)
@@ -591,8 +609,7 @@ class SceneParser {
     }
 
     void include_file(const Token &d, bool is_import) {
-        Token name_tok = next();
-        if (name_tok.kind != Token::Kind::String) unget(name_tok);
+        Token name_tok = peek();
         std::string name = string_argument(d, "file name");
         fs::path path(name);
         if (path.is_relative()) {
@@ -752,9 +769,10 @@ class SceneParser {
     void option(const Token &d) {
         std::string written = string_argument(d, "option name");
         Token value = next();
+        if (value.kind == Token::Kind::End || is_directive_word(value))
+            error(d, "Option \"" + written + "\": missing value");
         if (value.kind != Token::Kind::Word && value.kind != Token::Kind::String)
-            error(value.kind == Token::Kind::End ? d : value,
-                  "Option \"" + written + "\": missing value");
+            error(value, "Option \"" + written + "\": expected a value, found " + value.describe());
         // pbrt compares option names ignoring case, '-' and '_'. A "type name" spelling is
         // accepted by taking the last word.
         std::string name = written.substr(written.find_last_of(' ') == std::string::npos
@@ -778,7 +796,7 @@ class SceneParser {
         p.type = it->second;
         p.name = normalized;
         p.loc = d.location();
-        add_value(p, value);
+        add_value(p, value_kind(p.type), value);
         validate_parameter(p);
         std::erase_if(options_, [&](const ParsedParameter &o) { return o.name == p.name; });
         options_.push_back(std::move(p));
@@ -841,8 +859,7 @@ class SceneParser {
 
     void texture(const Token &d) {
         std::string name = string_argument(d, "texture name");
-        Token class_tok = next();
-        if (class_tok.kind != Token::Kind::String) unget(class_tok);
+        Token class_tok = peek();
         std::string texture_class = string_argument(d, "texture class (\"float\" or \"spectrum\")");
         if (texture_class != "float" && texture_class != "spectrum")
             error(class_tok, "Texture \"" + name + "\": the class must be \"float\" or "
@@ -920,6 +937,7 @@ class SceneParser {
     std::string base_directory_;
     std::vector<std::unique_ptr<std::string>> file_names_;
     std::vector<Source> sources_;
+    std::vector<FinishedImport> finished_imports_;
     std::optional<Token> pending_;
     Token end_token_;
 

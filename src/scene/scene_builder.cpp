@@ -8,6 +8,7 @@
 #include "materials/material_factory.h"
 #include "parser/scene_description.h"
 #include "sampler/sampler_factory.h"
+#include "geometry/shape_factory.h"
 #include "scene/scene.h"
 #include "textures/texture_factory.h"
 
@@ -182,18 +183,20 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     scene->overrides = ov;
     choose_integrator(d, ov, *scene);
 
+    if (!d.has_camera) throw InputError(SourceLocation{}, "the scene has no Camera directive");
     std::unique_ptr<Filter> filter =
         create_filter(d.filter.type.empty() ? "gaussian" : d.filter.type, d.filter.params, d.filter.loc);
     scene->film = create_film(d.film.type.empty() ? "rgb" : d.film.type, d.film.params, d.color_space,
-                              std::move(filter), d.film.loc, Vec2i{ov.width, ov.height});
+                              std::move(filter), d.film.loc, Vec2i{ov.width, ov.height},
+                              camera_exposure_time(d.camera.params, d.camera.loc));
     scene->film->set_monochromatic(ov.wavelength > 0);
     scene->output_filename = scene->film->filename();
-
-    if (!d.has_camera) throw InputError(SourceLocation{}, "the scene has no Camera directive");
-    scene->camera = create_camera(d.camera.type, d.camera.world_from_camera, scene->film->resolution(),
-                                  d.camera.params, d.camera.loc);
-    scene->sampler = create_sampler(d.sampler.type.empty() ? "zsobol" : d.sampler.type, d.sampler.params,
-                                    d.sampler.loc, int(ov.seed), ov.spp);
+    scene->camera = create_camera(d.camera.type.empty() ? "perspective" : d.camera.type,
+                                  d.camera.world_from_camera, scene->film->extent(), d.camera.params,
+                                  d.camera.loc);
+    scene->sampler = d.sampler.type.empty()
+                         ? create_default_sampler(int(ov.seed), ov.spp)
+                         : create_sampler(d.sampler.type, d.sampler.params, d.sampler.loc, int(ov.seed), ov.spp);
 
     NamedTextures textures;
     create_textures(d, textures);

@@ -26,15 +26,17 @@ TEST(Cli, MalformedScenesExitWithStatusTwoAndWriteNothing) {
     while (std::getline(manifest, line)) {
         if (line.empty() || line[0] == '#') continue;
         std::istringstream in(line);
-        std::string file;
+        // scene, file the error points into, line, column, message substring
+        std::string file, located_in;
         int l = 0, c = 0;
-        in >> file >> l >> c;
+        in >> file >> located_in >> l >> c;
         std::string out = dir + "/" + file + ".exr";
         std::string err = dir + "/" + file + ".err";
         EXPECT_EQ(run_caustica("render " + corpus + "/" + file + " --spp 1 -o " + out, err), 2) << file;
         EXPECT_FALSE(fs::exists(out)) << file;
         std::string message = read_text(err);
-        EXPECT_NE(message.find(":" + std::to_string(l) + ":" + std::to_string(c) + ": error:"),
+        EXPECT_NE(message.find(fs::path(located_in).filename().string() + ":" + std::to_string(l) + ":" +
+                               std::to_string(c) + ": error:"),
                   std::string::npos)
             << file << ": " << message;
         ++checked;

@@ -44,8 +44,8 @@ TEST(Instances, HitAtTransformedLocationWithTransformedNormal) {
         expect_near_vec(si.dpdu, t.apply_vector({1, 0, 0}), 1e-5f);
         expect_near_vec(si.wo, expected_n, 1e-6f);
         EXPECT_EQ(si.material, material);
-        EXPECT_TRUE(scene.occluded({origin, -expected_n * 6}));
-        EXPECT_FALSE(scene.occluded({origin, -expected_n * 4}));
+        EXPECT_TRUE(scene.occluded({origin, -expected_n, 6}));
+        EXPECT_FALSE(scene.occluded({origin, -expected_n, 4}));
     }
 }
 

@@ -1,9 +1,8 @@
 // Point, spot and distant lights against closed forms.
+#include "core/rng.h"
 #include "lights/distant_light.h"
 #include "lights/point_light.h"
 #include "lights/spot_light.h"
-
-#include "core/rng.h"
 
 #include <gtest/gtest.h>
 
@@ -43,8 +42,8 @@ TEST(PointLight, EmittedRaysCarryItsPower) {
         float pos, dir;
         light.pdf_le(s->ray, s->n, &pos, &dir);
         ASSERT_NEAR(dir, s->pdf_dir, 1e-6f);
-        EXPECT_EQ(s->pdf_pos, 1.f); // the discrete choice of the one position
-        EXPECT_EQ(pos, 0.f);        // ... which a ray cannot hit by chance
+        EXPECT_EQ(s->pdf_pos, 1.f);  // the discrete choice of the one position
+        EXPECT_EQ(pos, 0.f);         // ... which a ray cannot hit by chance
         power += s->L[0] / (s->pdf_pos * s->pdf_dir);
         mean_dir += s->ray.d / float(n);
     }
@@ -151,7 +150,7 @@ TEST(DistantLight, IlluminatesAlongItsDirectionAndEmitsThroughTheSceneDisk) {
     EXPECT_NEAR(distance(s->wi, towards_light), 0.f, 1e-6f);
     EXPECT_FLOAT_EQ(s->L[0], 3.f);
     EXPECT_TRUE(s->is_infinite);
-    EXPECT_GT(distance(s->p_light, center), radius); // outside the scene
+    EXPECT_GT(distance(s->p_light, center), radius);  // outside the scene
 
     // Power through the disk: 3 * pi r^2, each emitted ray carrying L / pdf_pos of it.
     EXPECT_NEAR(light.phi(lambda)[0], 3 * Pi * 6, 1e-3);
@@ -175,5 +174,5 @@ TEST(DistantLight, IlluminatesAlongItsDirectionAndEmitsThroughTheSceneDisk) {
     }
 }
 
-} // namespace
-} // namespace caustica
+}  // namespace
+}  // namespace caustica

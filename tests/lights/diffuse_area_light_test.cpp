@@ -94,10 +94,12 @@ TEST(DiffuseAreaLight, EmittedRaysCarryItsPower) {
         }
         EXPECT_NEAR(power / n, expected, 1e-3 * expected);
         // Binomial(n, 1/2): standard deviation 158; 5 sigma.
-        if (two_sided) EXPECT_NEAR(front, n / 2, 800);
-        else EXPECT_EQ(front, n);
+        if (two_sided)
+            EXPECT_NEAR(front, n / 2, 800);
+        else
+            EXPECT_EQ(front, n);
     }
 }
 
-} // namespace
-} // namespace caustica
+}  // namespace
+}  // namespace caustica

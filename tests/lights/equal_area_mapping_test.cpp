@@ -59,9 +59,11 @@ TEST(EqualAreaMapping, JacobianIsFourPi) {
                 std::abs(std::abs(up) + std::abs(vp) - 1) < 8 * h)
                 continue;
             Vec3f du = (equal_area_square_to_sphere({p.x + h, p.y}) -
-                        equal_area_square_to_sphere({p.x - h, p.y})) / (2 * h);
+                        equal_area_square_to_sphere({p.x - h, p.y})) /
+                       (2 * h);
             Vec3f dv = (equal_area_square_to_sphere({p.x, p.y + h}) -
-                        equal_area_square_to_sphere({p.x, p.y - h})) / (2 * h);
+                        equal_area_square_to_sphere({p.x, p.y - h})) /
+                       (2 * h);
             EXPECT_NEAR(length(cross(du, dv)), 4 * Pi, 0.02f * 4 * Pi) << p.x << " " << p.y;
             ++checked;
         }
@@ -86,5 +88,5 @@ TEST(EqualAreaMapping, UniformSquareGivesUniformSphere) {
     for (int k = 0; k < 8; ++k) EXPECT_NEAR(double(octant[k]) / n, 0.125, 3e-3);
 }
 
-} // namespace
-} // namespace caustica
+}  // namespace
+}  // namespace caustica

@@ -1,8 +1,7 @@
 #include "lights/light_sampler.h"
 
-#include "lights/point_light.h"
-
 #include "core/rng.h"
+#include "lights/point_light.h"
 
 #include <gtest/gtest.h>
 
@@ -54,5 +53,5 @@ TEST(UniformLightSampler, EveryLightEquallyLikely) {
     EXPECT_FALSE(UniformLightSampler({}).sample(0.5f));
 }
 
-} // namespace
-} // namespace caustica
+}  // namespace
+}  // namespace caustica

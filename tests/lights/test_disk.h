@@ -44,4 +44,4 @@ class TestDisk final : public Shape {
     float radius_;
 };
 
-} // namespace caustica::testing
+}  // namespace caustica::testing

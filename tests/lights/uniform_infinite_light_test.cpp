@@ -61,8 +61,8 @@ TEST(UniformInfiniteLight, EmittedRaysCarryItsPowerAndCrossTheScene) {
         ASSERT_LE(length(-s->ray.o - s->ray.d * along), std::sqrt(r2) * (1 + 1e-5f));
         mean_dir += s->ray.d / float(n);
     }
-    EXPECT_LT(length(mean_dir), 0.01f); // uniform directions; sigma per component 1.8e-3
+    EXPECT_LT(length(mean_dir), 0.01f);  // uniform directions; sigma per component 1.8e-3
 }
 
-} // namespace
-} // namespace caustica
+}  // namespace
+}  // namespace caustica

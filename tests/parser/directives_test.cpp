@@ -56,7 +56,7 @@ TEST(ParserDirectives, ParameterValueForms) {
         "  \"normal Nn\" [0 0 1 0 0 1 0 0 1] \"vector S\" [1 0 0]\n"
         "  \"integer indices\" [0 1 2] \"point2 uv\" [0 0 1 0 0 1]\n"
         "  \"bool flag\" true \"bool quoted\" \"false\" \"string names\" [\"a\" \"b\"]\n"
-        "  \"float neg\" -2.5e-1 \"float plus\" +3\n");
+        "  \"float neg\" -2.5e-1 \"float plus\" +3 \"float dot\" [.5 -.25 1.]\n");
     const ParameterDictionary &p = d.shapes[0].params;
     auto P = p.get_point3_array("P");
     ASSERT_EQ(P.size(), 3u);
@@ -71,6 +71,7 @@ TEST(ParserDirectives, ParameterValueForms) {
     EXPECT_EQ(p.get_string_array("names"), (std::vector<std::string>{"a", "b"}));
     EXPECT_FLOAT_EQ(p.get_one_float("neg", 0), -0.25f);
     EXPECT_FLOAT_EQ(p.get_one_float("plus", 0), 3);
+    EXPECT_EQ(p.get_float_array("dot"), (std::vector<float>{0.5f, -0.25f, 1.f}));
     EXPECT_EQ(p.location("S").line, 4);
     EXPECT_EQ(p.location("S").column, 35);
 }
@@ -202,7 +203,7 @@ TEST(ParserDirectives, ObjectInstancing) {
     ASSERT_EQ(d.instance_uses.size(), 3u);
     EXPECT_EQ(d.instance_uses[0].name, "early");
     EXPECT_EQ(d.instance_uses[1].name, "other");
-    EXPECT_EQ(d.instance_uses[1].loc.line, 11);
+    EXPECT_EQ(d.instance_uses[1].loc.line, 12);
 }
 
 TEST(ParserDirectives, AreaLightInsideInstanceWarns) {

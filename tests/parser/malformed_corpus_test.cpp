@@ -68,10 +68,11 @@ TEST(MalformedCorpus, EveryFileFailsAtTheRecordedLocation) {
 TEST(MalformedCorpus, ManifestListsEveryScene) {
     std::set<std::string> listed;
     for (const ExpectedError &e : read_manifest()) listed.insert(e.scene);
-    for (const auto &entry : fs::directory_iterator(corpus_dir()))
-        if (entry.path().extension() == ".pbrt")
-            EXPECT_TRUE(listed.count(entry.path().filename().string()))
-                << entry.path() << " is not in expected.txt";
+    for (const auto &entry : fs::directory_iterator(corpus_dir())) {
+        if (entry.path().extension() != ".pbrt") continue;
+        EXPECT_TRUE(listed.count(entry.path().filename().string()))
+            << entry.path() << " is not in expected.txt";
+    }
 }
 
 } // namespace

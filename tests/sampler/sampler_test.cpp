@@ -147,7 +147,9 @@ TEST(Sampler, StratifiedSamplerHitsEveryStratumOncePerRound) {
                     for (int d = 0; d < 4; ++d) {
                         float u = s.get_1d();
                         strata_1d[d].insert(int(u * spp));
-                        if (!jitter) EXPECT_FLOAT_EQ(u * spp - int(u * spp), 0.5f);
+                        if (!jitter) {
+                            EXPECT_FLOAT_EQ(u * spp - int(u * spp), 0.5f);
+                        }
                         Vec2f u2 = s.get_2d();
                         strata_2d[d].insert(int(u2.y * 3) * 4 + int(u2.x * 4));
                     }

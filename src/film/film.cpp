@@ -1,0 +1,220 @@
+#include "film/film.h"
+
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace caustica {
+
+namespace {
+
+// Fixed-point unit of the splat sums (see film.h).
+constexpr double kSplatUnit = 0x1p-28;
+constexpr double kSplatLimit = 0x1p62;  // largest single contribution, in units
+
+} // namespace
+
+Film::Film(Vec2i full_resolution, PixelBounds pixel_bounds, std::unique_ptr<Filter> filter,
+           const RGBColorSpace &output, const PixelSensor &sensor, float max_component_value,
+           std::string filename, bool save_fp16)
+    : full_resolution_(full_resolution), pixel_bounds_(pixel_bounds), filter_(std::move(filter)),
+      filter_integral_(filter_->integral()), output_(&output), sensor_(sensor),
+      output_from_sensor_(output.rgb_from_xyz_matrix() * sensor.xyz_from_sensor_rgb()),
+      max_component_value_(max_component_value), filename_(std::move(filename)),
+      save_fp16_(save_fp16), pixels_(size_t(pixel_bounds.width()) * pixel_bounds.height()),
+      splats_(pixels_.size() * 3) {
+    if (pixel_bounds_.empty()) throw std::invalid_argument("film: empty pixel bounds");
+}
+
+FilmExtent Film::extent() const {
+    Vec2f r = filter_->radius();
+    return {full_resolution_,
+            {pixel_bounds_.min.x - r.x + 0.5f, pixel_bounds_.min.y - r.y + 0.5f},
+            {pixel_bounds_.max.x + r.x - 0.5f, pixel_bounds_.max.y + r.y - 0.5f},
+            r};
+}
+
+RGB Film::sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const {
+    RGB v;
+    if (monochromatic_) {
+        float grey = safe_div(L, lambda.pdf()).average() * sensor_.imaging_ratio();
+        v = {grey, grey, grey};
+    } else {
+        v = sensor_.to_sensor_rgb(L, lambda);
+    }
+    // pbrt-v4's clamp: scale the value down so its largest component is the maximum, which
+    // keeps its chromaticity.
+    float m = v.max_component();
+    if (m > max_component_value_) v *= max_component_value_ / m;
+    return v;
+}
+
+void Film::add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavelengths &lambda,
+                      float filter_weight) {
+    assert(!L.has_non_finite() && std::isfinite(filter_weight));
+    assert(pixel_bounds_.contains(pixel));
+    RGB v = sensor_value(L, lambda);
+    Pixel &p = pixels_[index(pixel)];
+    for (int c = 0; c < 3; ++c) p.rgb_sum[c] += double(filter_weight) * v[c];
+    p.weight_sum += filter_weight;
+}
+
+void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda) {
+    assert(!L.has_non_finite());
+    RGB v = sensor_value(L, lambda);
+    // The pixels whose centres lie within the filter's radius of p.
+    Vec2f r = filter_->radius();
+    Vec2f discrete{p_raster.x + 0.5f, p_raster.y + 0.5f};
+    int x0 = std::max(pixel_bounds_.min.x, int(std::floor(discrete.x - r.x)));
+    int y0 = std::max(pixel_bounds_.min.y, int(std::floor(discrete.y - r.y)));
+    int x1 = std::min(pixel_bounds_.max.x, int(std::floor(discrete.x + r.x)) + 1);
+    int y1 = std::min(pixel_bounds_.max.y, int(std::floor(discrete.y + r.y)) + 1);
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            float w = filter_->evaluate({p_raster.x - x - 0.5f, p_raster.y - y - 0.5f});
+            if (w == 0) continue;
+            std::atomic<int64_t> *sum = &splats_[index({x, y}) * 3];
+            for (int c = 0; c < 3; ++c) {
+                double units = std::nearbyint(double(w) * v[c] / kSplatUnit);
+                if (std::abs(units) > kSplatLimit) {
+                    splat_overflow_ = true;
+                    units = std::copysign(kSplatLimit, units);
+                }
+                int64_t delta = int64_t(units), old = sum[c].fetch_add(delta, std::memory_order_relaxed);
+                int64_t unused;
+                if (__builtin_add_overflow(old, delta, &unused)) splat_overflow_ = true;
+            }
+        }
+}
+
+Image Film::get_image(double splat_scale) const {
+    Image image(pixel_bounds_.width(), pixel_bounds_.height());
+    image.origin = pixel_bounds_.min;
+    image.full_resolution = full_resolution_;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            size_t i = size_t(y) * image.width + x;
+            const Pixel &p = pixels_[i];
+            double sensor[3];
+            for (int c = 0; c < 3; ++c) {
+                sensor[c] = p.weight_sum != 0 ? p.rgb_sum[c] / p.weight_sum : 0;
+                double splat = double(splats_[i * 3 + c].load(std::memory_order_relaxed)) * kSplatUnit;
+                sensor[c] += splat_scale * splat / filter_integral_;
+            }
+            RGB v{float(sensor[0]), float(sensor[1]), float(sensor[2])};
+            if (!monochromatic_) v = output_from_sensor_ * v;
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = v[c];
+        }
+    if (splat_overflow_.exchange(false))
+        warning("light-tracing contributions exceeded the film's fixed-point range; the image "
+                "is wrong where they landed");
+    return image;
+}
+
+CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter) {
+    FilterSample fs = filter.sample(sampler.get_pixel_2d());
+    CameraSample cs;
+    cs.p_film = {pixel.x + 0.5f + fs.p.x, pixel.y + 0.5f + fs.p.y};
+    cs.p_lens = sampler.get_2d();
+    cs.filter_weight = fs.weight;
+    return cs;
+}
+
+// ---- Factory ----
+
+namespace {
+
+PixelBounds read_pixel_bounds(const ParameterDictionary &params, Vec2i full, const SourceLocation &loc) {
+    PixelBounds bounds{{0, 0}, full};
+    auto clamp_to_image = [&](PixelBounds b, const std::string &name) {
+        PixelBounds c{{std::max(b.min.x, 0), std::max(b.min.y, 0)},
+                      {std::min(b.max.x, full.x), std::min(b.max.y, full.y)}};
+        if (!(c == b)) warning(params.location(name), "\"" + name + "\" extends beyond the image; clamping it");
+        return c;
+    };
+    std::vector<int> pb = params.get_int_array("pixelbounds");
+    std::vector<float> cw = params.get_float_array("cropwindow");
+    if (!pb.empty()) {
+        if (pb.size() != 4)
+            throw InputError(params.location("pixelbounds"),
+                             "\"pixelbounds\" needs 4 values (x0 x1 y0 y1), got " + std::to_string(pb.size()));
+        bounds = clamp_to_image({{pb[0], pb[2]}, {pb[1], pb[3]}}, "pixelbounds");
+    }
+    if (!cw.empty()) {
+        if (cw.size() != 4)
+            throw InputError(params.location("cropwindow"),
+                             "\"cropwindow\" needs 4 values (x0 x1 y0 y1), got " + std::to_string(cw.size()));
+        if (!pb.empty())
+            warning(params.location("cropwindow"), "both \"pixelbounds\" and \"cropwindow\" are given; "
+                                                   "using the crop window");
+        // pbrt-v4: each range is ordered and clamped to [0, 1]; the first pixel is the one
+        // whose left/top edge is at or after the window's start.
+        float x0 = clamp(std::min(cw[0], cw[1]), 0.f, 1.f), x1 = clamp(std::max(cw[0], cw[1]), 0.f, 1.f);
+        float y0 = clamp(std::min(cw[2], cw[3]), 0.f, 1.f), y1 = clamp(std::max(cw[2], cw[3]), 0.f, 1.f);
+        bounds = {{int(std::ceil(full.x * x0)), int(std::ceil(full.y * y0))},
+                  {int(std::ceil(full.x * x1)), int(std::ceil(full.y * y1))}};
+    }
+    if (bounds.empty()) throw InputError(loc, "the film's pixel bounds (crop window) are empty");
+    return bounds;
+}
+
+} // namespace
+
+std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictionary &params,
+                                  const RGBColorSpace *color_space, std::unique_ptr<Filter> filter,
+                                  const SourceLocation &loc, Vec2i resolution_override,
+                                  float exposure_time) {
+    if (type == "gbuffer" || type == "spectral") {
+        warning(loc, "the \"" + type + "\" film is written as an \"rgb\" film (RGB channels only)");
+        // Their own parameters are covered by the warning above.
+        if (type == "gbuffer") params.get_one_string("coordinatesystem", "");
+        if (type == "spectral") {
+            params.get_one_int("nbuckets", 16);
+            params.get_one_float("lambdamin", LambdaMin);
+            params.get_one_float("lambdamax", LambdaMax);
+        }
+    } else if (type != "rgb") {
+        throw InputError(loc, "\"" + type + "\": unknown film type");
+    }
+    const RGBColorSpace &output = color_space ? *color_space : RGBColorSpace::srgb();
+
+    Vec2i full{params.get_one_int("xresolution", 1280), params.get_one_int("yresolution", 720)};
+    if (resolution_override.x > 0) full.x = resolution_override.x;
+    if (resolution_override.y > 0) full.y = resolution_override.y;
+    if (full.x < 1) throw InputError(params.location("xresolution"), "\"xresolution\" must be positive");
+    if (full.y < 1) throw InputError(params.location("yresolution"), "\"yresolution\" must be positive");
+    PixelBounds bounds = read_pixel_bounds(params, full, loc);
+
+    std::string filename = params.get_one_string("filename", "");
+    if (filename.empty()) filename = "pbrt.exr";
+    params.get_one_float("diagonal", 35);  // sensor size of the realistic camera (unsupported)
+
+    float iso = params.get_one_float("iso", 100);
+    if (!(iso > 0)) throw InputError(params.location("iso"), "\"iso\" must be positive");
+    std::string sensor_name = params.get_one_string("sensor", "cie1931");
+    float white_balance = params.get_one_float("whitebalance", 0);
+    if (sensor_name != "cie1931") {
+        warning(params.location("sensor"), "sensor \"" + sensor_name + "\" is not supported; using the "
+                                           "CIE 1931 observer (\"cie1931\")");
+        // pbrt-v4 white-balances measured camera sensors to 6500 K unless told otherwise.
+        if (white_balance == 0) white_balance = 6500;
+    }
+    if (!(white_balance >= 0))
+        throw InputError(params.location("whitebalance"), "\"whitebalance\" must not be negative");
+    float max_component = params.get_one_float("maxcomponentvalue", Infinity);
+    if (!(max_component > 0))
+        throw InputError(params.location("maxcomponentvalue"), "\"maxcomponentvalue\" must be positive");
+    bool fp16 = params.get_one_bool("savefp16", false);
+
+    std::optional<PixelSensor> sensor;
+    try {
+        sensor.emplace(output, white_balance, exposure_time * iso / 100);
+    } catch (const std::domain_error &e) {
+        throw InputError(params.location("whitebalance"), e.what());
+    }
+    return std::make_unique<Film>(full, bounds, std::move(filter), output, *sensor, max_component,
+                                  filename, fp16);
+}
+
+} // namespace caustica

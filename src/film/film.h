@@ -1,0 +1,130 @@
+// The film: accumulates radiance samples into pixels and produces the image (pbrt-v4's RGBFilm).
+//
+// Camera samples (add_sample) go to the pixel they were taken for, weighted by their filter
+// weight (see filter.h); a pixel's value is the weighted average. Tiles of pixels are rendered
+// by different threads, so add_sample needs no locking: each pixel is only ever written by the
+// thread rendering its tile, and its samples arrive in a fixed order.
+//
+// Light-tracing contributions (add_splat) can land anywhere, from any thread. They are summed
+// in 64-bit fixed point (2^-28 units) with integer atomics: integer addition is associative,
+// so the result is identical whatever the order of the additions, and therefore independent of
+// the number of threads for a given seed (floating-point atomics would not be). The unit is
+// small enough that rounding is ~1e-8 of a typical contribution, and the range (±3.4e10 per
+// pixel and channel) is far above any pixel value times any realistic sample count; exceeding
+// it is detected and reported when the image is made.
+//
+// Values are kept in the sensor's space (XYZ for the CIE 1931 sensor) as pbrt-v4 does, and
+// converted to the output colour space's linear RGB when the image is made.
+#pragma once
+
+#include "camera/camera.h"
+#include "core/error.h"
+#include "film/filter.h"
+#include "film/image.h"
+#include "film/image_io.h"
+#include "film/pixel_sensor.h"
+#include "params/parameters.h"
+#include "sampler/sampler.h"
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace caustica {
+
+// A rectangle of pixels [min, max) in full-resolution raster coordinates.
+struct PixelBounds {
+    Vec2i min, max;
+    int width() const { return max.x - min.x; }
+    int height() const { return max.y - min.y; }
+    bool empty() const { return width() <= 0 || height() <= 0; }
+    bool contains(Vec2i p) const { return p.x >= min.x && p.x < max.x && p.y >= min.y && p.y < max.y; }
+    bool operator==(const PixelBounds &) const = default;
+};
+
+class Film {
+  public:
+    // pixel_bounds: the pixels rendered (the crop window), within [0, full_resolution).
+    // max_component_value clamps each sample's largest sensor component (pbrt's firefly
+    // control); infinity disables it.
+    Film(Vec2i full_resolution, PixelBounds pixel_bounds, std::unique_ptr<Filter> filter,
+         const RGBColorSpace &output, const PixelSensor &sensor, float max_component_value,
+         std::string filename, bool save_fp16);
+
+    // The full frame; pixel_bounds() are the pixels actually rendered.
+    Vec2i resolution() const { return full_resolution_; }
+    const PixelBounds &pixel_bounds() const { return pixel_bounds_; }
+    // What the camera needs to know about the film (pass it to create_camera).
+    FilmExtent extent() const;
+    const Filter &filter() const { return *filter_; }
+    const RGBColorSpace &color_space() const { return *output_; }
+    const std::string &filename() const { return filename_; }
+    // True if the scene asked for half-float EXR output ("savefp16").
+    bool save_fp16() const { return save_fp16_; }
+
+    // Monochromatic rendering (`--wavelength`): a sample's value is the grey level
+    // (1/n) sum_j L_j / pdf_j (times the imaging ratio) in every channel, with no colour
+    // conversion.
+    void set_monochromatic(bool on) { monochromatic_ = on; }
+    bool monochromatic() const { return monochromatic_; }
+
+    // A camera sample for `pixel` (inside pixel_bounds()). L must be finite: integrators count
+    // and drop non-finite estimates before they reach the film.
+    void add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavelengths &lambda,
+                    float filter_weight);
+    // A light-tracing contribution at a raster position; reaches every pixel within the
+    // filter's radius, weighted by the filter. Thread-safe and order-independent.
+    void add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda);
+
+    // The image over pixel_bounds(), in the output colour space's linear RGB: the weighted
+    // average of the samples plus splat_scale times the splats divided by the filter's integral
+    // (pbrt-v4; for light tracing, splat_scale is 1 / samples per pixel).
+    Image get_image(double splat_scale) const;
+
+  private:
+    RGB sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const;
+    size_t index(Vec2i pixel) const {
+        return size_t(pixel.y - pixel_bounds_.min.y) * pixel_bounds_.width() + (pixel.x - pixel_bounds_.min.x);
+    }
+
+    struct Pixel {
+        double rgb_sum[3] = {0, 0, 0};
+        double weight_sum = 0;
+    };
+
+    Vec2i full_resolution_;
+    PixelBounds pixel_bounds_;
+    std::unique_ptr<Filter> filter_;
+    float filter_integral_;
+    const RGBColorSpace *output_;
+    PixelSensor sensor_;
+    Matrix3 output_from_sensor_;
+    float max_component_value_;
+    std::string filename_;
+    bool save_fp16_;
+    bool monochromatic_ = false;
+
+    std::vector<Pixel> pixels_;
+    std::vector<std::atomic<int64_t>> splats_;  // 3 per pixel, fixed point
+    mutable std::atomic<bool> splat_overflow_{false};
+};
+
+// The camera sample for a pixel: the position within the pixel (pixel + 0.5 + a filter offset
+// drawn from get_pixel_2d()), the lens position (get_2d()) and the filter weight. Consumes the
+// sampler dimensions documented in sampler.h.
+CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter);
+
+// pbrt-v4's "rgb" film ("gbuffer" and "spectral" are accepted with a warning and written as
+// rgb): "xresolution" (1280), "yresolution" (720), "filename" ("pbrt.exr"), "cropwindow",
+// "pixelbounds", "iso" (100), "whitebalance" (0: none), "sensor" ("cie1931"; others warn and use
+// it), "maxcomponentvalue" (infinity), "savefp16" (false here: Caustica writes full floats
+// unless asked). exposure_time is the camera's shutter interval (camera_exposure_time()).
+// resolution_override components > 0 replace the resolution (the command line). A null
+// color_space means sRGB.
+std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictionary &params,
+                                  const RGBColorSpace *color_space, std::unique_ptr<Filter> filter,
+                                  const SourceLocation &loc, Vec2i resolution_override = {0, 0},
+                                  float exposure_time = 1);
+
+} // namespace caustica

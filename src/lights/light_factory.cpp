@@ -1,0 +1,200 @@
+#include "lights/light_factory.h"
+
+#include "lights/diffuse_area_light.h"
+#include "lights/distant_light.h"
+#include "lights/image_infinite_light.h"
+#include "lights/photometric.h"
+#include "lights/point_light.h"
+#include "lights/rgb_image.h"
+#include "lights/spot_light.h"
+#include "lights/uniform_infinite_light.h"
+#include "spectral/color_space.h"
+
+#include <filesystem>
+
+namespace caustica {
+
+namespace {
+
+// The light's spectrum, or the colour space's illuminant (pbrt-v4's default for every light).
+SpectrumPtr light_spectrum(const ParameterDictionary &params, const std::string &name) {
+    SpectrumPtr s = params.get_one_spectrum(name, nullptr, SpectrumType::Illuminant);
+    return s ? s : std::make_shared<DenselySampledSpectrum>(params.color_space().illuminant());
+}
+
+// Divides scale by the spectrum's luminance integral so that the light emits 1 nit (or 1 cd)
+// times scale; a spectrum without luminance emits nothing.
+float photometric_scale(float scale, const Spectrum &s) {
+    float y = spectrum_to_photometric(s);
+    return y > 0 ? scale / y : 0.f;
+}
+
+// Lights evaluate their spectrum at every sample: a 1 nm table is fast whatever the source.
+SpectrumPtr tabulated(const SpectrumPtr &s) { return std::make_shared<DenselySampledSpectrum>(*s); }
+
+// The transform taking light-space +z to unit direction z (x and y completing a frame).
+Transform transform_from_z(Vec3f z) {
+    Frame f = Frame::from_z(z);
+    const float m[16] = {f.x.x, f.y.x, f.z.x, 0, f.x.y, f.y.y, f.z.y, 0,
+                         f.x.z, f.y.z, f.z.z, 0, 0,     0,     0,     1};
+    return Transform(Matrix4::from_row_major(m), Matrix4::from_row_major(m).transposed());
+}
+
+Vec3f direction_between(const ParameterDictionary &params, Vec3f from, Vec3f to) {
+    Vec3f d = to - from;
+    if (!(length_squared(d) > 0))
+        throw InputError(params.location("to"), "\"from\" and \"to\" must be different points");
+    return normalize(d);
+}
+
+LightPtr create_point(const Transform &render_from_light, const ParameterDictionary &params) {
+    SpectrumPtr I = light_spectrum(params, "I");
+    float scale = photometric_scale(params.get_one_float("scale", 1), *I);
+    float power = params.get_one_float("power", -1);
+    // Intensity 1 over the sphere of directions gives power 4 pi.
+    if (power > 0) scale *= power / (4 * Pi);
+    Vec3f from = params.get_one_point3("from", {0, 0, 0});
+    return std::make_shared<PointLight>(render_from_light * Transform::translate(from),
+                                        tabulated(I), scale);
+}
+
+LightPtr create_spot(const Transform &render_from_light, const ParameterDictionary &params) {
+    SpectrumPtr I = light_spectrum(params, "I");
+    float scale = photometric_scale(params.get_one_float("scale", 1), *I);
+    float cone_angle = params.get_one_float_checked("coneangle", 30, 0, 180);
+    float cone_delta = params.get_one_float_checked("conedeltaangle", 5, 0, 180);
+    Vec3f from = params.get_one_point3("from", {0, 0, 0});
+    Vec3f to = params.get_one_point3("to", {0, 0, 1});
+    Transform light_frame =
+        Transform::translate(from) * transform_from_z(direction_between(params, from, to));
+    float power = params.get_one_float("power", -1);
+    if (power > 0) {
+        // Power of unit intensity: 2 pi times the profile integrated over cos theta.
+        float cos_end = std::cos(radians(cone_angle));
+        float cos_start = std::cos(radians(cone_angle - cone_delta));
+        float k_e = 2 * Pi * ((1 - cos_start) + (cos_start - cos_end) / 2);
+        if (k_e > 0) scale *= power / k_e;
+    }
+    return std::make_shared<SpotLight>(render_from_light * light_frame, tabulated(I), scale,
+                                       cone_angle, cone_angle - cone_delta);
+}
+
+LightPtr create_distant(const Transform &render_from_light, const ParameterDictionary &params) {
+    SpectrumPtr L = light_spectrum(params, "L");
+    float scale = photometric_scale(params.get_one_float("scale", 1), *L);
+    Vec3f from = params.get_one_point3("from", {0, 0, 0});
+    Vec3f to = params.get_one_point3("to", {0, 0, 1});
+    // Light-space +z points back towards the light, from "to" to "from".
+    Transform frame = transform_from_z(direction_between(params, to, from));
+    // Illuminance on a surface perpendicular to the light: 1 per unit of normalised L.
+    float illuminance = params.get_one_float("illuminance", -1);
+    if (illuminance > 0) scale *= illuminance;
+    return std::make_shared<DistantLight>(render_from_light * frame, tabulated(L), scale);
+}
+
+EnvironmentMapping environment_mapping(const RGBImage &image, const ParameterDictionary &params,
+                                       const std::string &filename) {
+    if (image.width == image.height) return EnvironmentMapping::EqualArea;
+    if (image.width == 2 * image.height) return EnvironmentMapping::Equirectangular;
+    throw InputError(params.location("filename"),
+                     "\"" + filename + "\": resolution " + std::to_string(image.width) + "x" +
+                         std::to_string(image.height) +
+                         " is neither square (pbrt-v4's equal-area octahedral environment map) "
+                         "nor 2:1 (an equirectangular map)");
+}
+
+LightPtr create_infinite(const Transform &render_from_light, const ParameterDictionary &params) {
+    SpectrumPtr L = params.get_one_spectrum("L", nullptr, SpectrumType::Illuminant);
+    float scale = params.get_one_float("scale", 1);
+    std::string filename = params.get_one_string("filename", "");
+    float illuminance = params.get_one_float("illuminance", -1);
+    if (!params.get_point3_array("portal").empty())
+        warning(params.location("portal"),
+                "infinite light portals are not supported; the "
+                "\"portal\" is ignored (same image, more noise)");
+    const RGBColorSpace &cs = params.color_space();
+
+    if (filename.empty()) {
+        if (!L) L = std::make_shared<DenselySampledSpectrum>(cs.illuminant());
+        scale = photometric_scale(scale, *L);
+        // A uniform sky of luminance 1 sheds illuminance pi on a surface.
+        if (illuminance > 0) scale *= illuminance / Pi;
+        return std::make_shared<UniformInfiniteLight>(tabulated(L), scale);
+    }
+    if (L)
+        throw InputError(params.location("L"),
+                         "an infinite light takes either \"L\" or \"filename\", not both");
+
+    std::filesystem::path path(filename);
+    if (path.is_relative() && !params.base_directory().empty())
+        path = std::filesystem::path(params.base_directory()) / path;
+    RGBImage image;
+    try {
+        image = read_rgb_image(path.string());
+    } catch (const std::runtime_error &e) {
+        throw InputError(params.location("filename"), e.what());
+    }
+    EnvironmentMapping mapping = environment_mapping(image, params, filename);
+    // Image values are RGB in sRGB (pbrt-v4 reads the file's colour space; files without one,
+    // nearly all, are sRGB).
+    const RGBColorSpace &image_cs = RGBColorSpace::srgb();
+    scale = photometric_scale(scale, image_cs.illuminant());
+    if (illuminance > 0) {
+        float k_e = ImageInfiniteLight::pbrt_illuminance_normalization(image, mapping,
+                                                                       luminance_weights(image_cs));
+        if (k_e > 0) scale *= illuminance / k_e;
+    }
+    return std::make_shared<ImageInfiniteLight>(render_from_light, std::move(image), mapping,
+                                                image_cs, scale);
+}
+
+}  // namespace
+
+LightPtr create_light(const std::string &type, const Transform &render_from_light,
+                      const ParameterDictionary &params, const SourceLocation &loc) {
+    LightPtr light;
+    if (type == "point")
+        light = create_point(render_from_light, params);
+    else if (type == "spot")
+        light = create_spot(render_from_light, params);
+    else if (type == "distant")
+        light = create_distant(render_from_light, params);
+    else if (type == "infinite")
+        light = create_infinite(render_from_light, params);
+    else if (type == "goniometric" || type == "projection") {
+        warning(loc, "\"" + type + "\" lights are not supported; the light is ignored");
+        return nullptr;
+    } else
+        throw InputError(loc, "unknown light type \"" + type + "\"");
+    params.report_unused();
+    return light;
+}
+
+std::vector<LightPtr> create_area_lights(const std::string &type, const ParameterDictionary &params,
+                                         const std::vector<std::shared_ptr<Shape>> &shapes,
+                                         const SourceLocation &loc) {
+    if (type != "diffuse") throw InputError(loc, "unknown area light type \"" + type + "\"");
+    SpectrumPtr L = light_spectrum(params, "L");
+    float scale = photometric_scale(params.get_one_float("scale", 1), *L);
+    bool two_sided = params.get_one_bool("twosided", false);
+    float power = params.get_one_float("power", -1);
+    if (!params.get_one_string("filename", "").empty())
+        warning(params.location("filename"),
+                "image-textured area light emission is not "
+                "supported; \"filename\" is ignored and \"L\" used");
+    SpectrumPtr radiance = tabulated(L);  // shared by all the shapes' lights
+    std::vector<LightPtr> lights;
+    lights.reserve(shapes.size());
+    for (const std::shared_ptr<Shape> &shape : shapes) {
+        float shape_scale = scale;
+        // Radiance 1 over the hemisphere and the area gives power pi A per side.
+        float k_e = (two_sided ? 2 : 1) * shape->area() * Pi;
+        if (power > 0 && k_e > 0) shape_scale *= power / k_e;
+        lights.push_back(
+            std::make_shared<DiffuseAreaLight>(shape, radiance, shape_scale, two_sided));
+    }
+    params.report_unused();
+    return lights;
+}
+
+}  // namespace caustica

@@ -1,0 +1,29 @@
+// pbrt-v4's "conductor" material: a smooth or rough metal given by its spectral complex index
+// of refraction (eta, k), or by an artist's "reflectance" colour r, which is turned into the
+// index of a hypothetical metal with eta = 1 and k = 2 sqrt(r) / sqrt(1 - r): the conductor
+// Fresnel term at normal incidence, ((eta - 1)^2 + k^2) / ((eta + 1)^2 + k^2), is then exactly r
+// (pbrt-v4's ConductorMaterial).
+#pragma once
+
+#include "materials/material.h"
+#include "materials/microfacet_roughness.h"
+
+namespace caustica {
+
+class ConductorMaterial final : public Material {
+  public:
+    // Either eta and k, or reflectance (the others null).
+    ConductorMaterial(SpectrumTexturePtr eta, SpectrumTexturePtr k, SpectrumTexturePtr reflectance,
+                      MicrofacetRoughness roughness)
+        : eta_(std::move(eta)), k_(std::move(k)), reflectance_(std::move(reflectance)),
+          roughness_(std::move(roughness)) {}
+    BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
+                  ScratchBuffer &scratch) const override;
+    bool has_specular_lobe() const override { return roughness_.may_be_smooth(); }
+
+  private:
+    SpectrumTexturePtr eta_, k_, reflectance_;
+    MicrofacetRoughness roughness_;
+};
+
+} // namespace caustica

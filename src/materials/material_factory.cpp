@@ -1,0 +1,186 @@
+#include "materials/material_factory.h"
+
+#include "materials/conductor_material.h"
+#include "materials/dielectric_material.h"
+#include "materials/diffuse_material.h"
+#include "params/constant_textures.h"
+#include "params/parameters.h"
+#include "spectral/ior.h"
+#include "spectral/named_spectra.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace caustica {
+
+namespace {
+
+constexpr std::array UnsupportedMaterials = {"coateddiffuse", "coatedconductor", "measured", "hair",
+                                             "subsurface", "mix", "diffusetransmission"};
+
+std::string quoted(const std::string &s) { return "\"" + s + "\""; }
+
+// Throws unless the constant value of a float texture (if it is constant) is a number >= 0.
+void check_non_negative_texture(const ParameterDictionary &params, const std::string &name,
+                                const FloatTexturePtr &texture) {
+    const float *v = texture->constant_value();
+    if (v && !(*v >= 0))
+        throw InputError(params.location(name),
+                         quoted(name) + " must be a non-negative number, not " + std::to_string(*v));
+}
+
+MicrofacetRoughness read_roughness(const ParameterDictionary &params, const NamedTextures &textures) {
+    MicrofacetRoughness r;
+    r.u = params.get_float_texture_or_null("uroughness", textures);
+    r.v = params.get_float_texture_or_null("vroughness", textures);
+    if (r.u) check_non_negative_texture(params, "uroughness", r.u);
+    if (r.v) check_non_negative_texture(params, "vroughness", r.v);
+    if (!r.u || !r.v) {
+        FloatTexturePtr both = params.get_float_texture("roughness", 0, textures);
+        check_non_negative_texture(params, "roughness", both);
+        if (!r.u) r.u = both;
+        if (!r.v) r.v = both;
+    }
+    r.remap = params.get_one_bool("remaproughness", true);
+    return r;
+}
+
+// Throws unless the spectrum is finite and > 0 (or >= 0 when zero_allowed) at every wavelength.
+void check_spectrum(const ParameterDictionary &params, const std::string &name, const Spectrum &s,
+                    bool zero_allowed, const std::string &what) {
+    float lo, hi;
+    spectrum_range(s, &lo, &hi);
+    bool ok = std::isfinite(lo) && std::isfinite(hi) && (zero_allowed ? lo >= 0 : lo > 0);
+    if (!ok)
+        throw InputError(params.location(name),
+                         quoted(name) + " must be " + what + " at every wavelength in [" +
+                             std::to_string(int(LambdaMin)) + ", " + std::to_string(int(LambdaMax)) +
+                             "] nm (its values range over [" + std::to_string(lo) + ", " +
+                             std::to_string(hi) + "])");
+}
+
+void check_spectrum_texture(const ParameterDictionary &params, const std::string &name,
+                            const SpectrumTexturePtr &texture, bool zero_allowed, const std::string &what) {
+    if (auto *c = dynamic_cast<const ConstantSpectrumTexture *>(texture.get()))
+        check_spectrum(params, name, *c->spectrum(), zero_allowed, what);
+}
+
+// The index of refraction of a dielectric from "eta" or the Sellmeier / Cauchy extensions.
+SpectrumPtr read_ior(const ParameterDictionary &params) {
+    bool sellmeier = params.has("sellmeierB") || params.has("sellmeierC");
+    bool cauchy = params.has("cauchyA") || params.has("cauchyB");
+    const char *first_formula = sellmeier ? "sellmeierB" : "cauchyA";
+    if (sellmeier && cauchy)
+        throw InputError(params.location("cauchyA"),
+                         "give either the Sellmeier or the Cauchy coefficients, not both");
+    if ((sellmeier || cauchy) && params.has("eta"))
+        throw InputError(params.location(first_formula),
+                         "give either \"eta\" or dispersion coefficients, not both");
+
+    SpectrumPtr eta;
+    std::string name = "eta";
+    if (sellmeier) {
+        std::vector<float> b = params.get_float_array("sellmeierB"), c = params.get_float_array("sellmeierC");
+        if (b.empty() || b.size() != c.size() || b.size() > 3)
+            throw InputError(params.location(b.empty() ? "sellmeierC" : "sellmeierB"),
+                             "\"sellmeierB\" and \"sellmeierC\" need the same number (1 to 3) of "
+                             "coefficients; got " + std::to_string(b.size()) + " and " +
+                             std::to_string(c.size()));
+        for (float v : b) if (!std::isfinite(v)) throw InputError(params.location("sellmeierB"), "\"sellmeierB\" must be finite");
+        for (float v : c) if (!std::isfinite(v)) throw InputError(params.location("sellmeierC"), "\"sellmeierC\" must be finite");
+        eta = std::make_shared<SellmeierSpectrum>(b, c);
+        name = "sellmeierB";
+    } else if (cauchy) {
+        float a = params.get_one_float("cauchyA", 1.5f), b = params.get_one_float("cauchyB", 0);
+        if (!std::isfinite(b)) throw InputError(params.location("cauchyB"), "\"cauchyB\" must be finite");
+        eta = std::make_shared<CauchySpectrum>(a, b);
+        name = "cauchyA";
+    } else {
+        // A "float eta" reads as a constant spectrum; named spectra ("glass-BK7") and inline or
+        // file spectra are dispersion curves.
+        eta = params.get_one_spectrum("eta", std::make_shared<ConstantSpectrum>(1.5f), SpectrumType::Unbounded);
+    }
+    check_spectrum(params, name, *eta, false, "a positive index of refraction");
+    return eta;
+}
+
+// Beer-Lambert absorption of a dielectric's interior, or null.
+SpectrumPtr read_interior_absorption(const ParameterDictionary &params) {
+    bool has_sigma = params.has("sigma_a"), has_transmittance = params.has("transmittance");
+    if (has_sigma && has_transmittance)
+        throw InputError(params.location("transmittance"),
+                         "give either \"sigma_a\" or \"transmittance\", not both");
+    if (has_sigma) {
+        SpectrumPtr sigma_a = params.get_one_spectrum("sigma_a", nullptr, SpectrumType::Unbounded);
+        if (!sigma_a) return nullptr;
+        check_spectrum(params, "sigma_a", *sigma_a, true, "a non-negative absorption coefficient");
+        return sigma_a;
+    }
+    if (has_transmittance) {
+        SpectrumPtr t = params.get_one_spectrum("transmittance", nullptr, SpectrumType::Albedo);
+        float d = params.get_one_float("atDistance", 1);
+        if (!(d > 0 && std::isfinite(d)))
+            throw InputError(params.location("atDistance"), "\"atDistance\" must be a positive distance");
+        if (!t) return nullptr;
+        check_spectrum(params, "transmittance", *t, true, "non-negative");
+        return std::make_shared<TransmittanceAbsorptionSpectrum>(t, d);
+    }
+    return nullptr;
+}
+
+MaterialPtr create_conductor(const ParameterDictionary &params, const NamedTextures &textures) {
+    SpectrumTexturePtr eta = params.get_spectrum_texture_or_null("eta", SpectrumType::Unbounded, textures);
+    SpectrumTexturePtr k = params.get_spectrum_texture_or_null("k", SpectrumType::Unbounded, textures);
+    SpectrumTexturePtr reflectance =
+        params.get_spectrum_texture_or_null("reflectance", SpectrumType::Albedo, textures);
+    if (reflectance && (eta || k))
+        throw InputError(params.location("reflectance"),
+                         "a conductor takes either \"reflectance\" or \"eta\" and \"k\", not both");
+    if (!reflectance) {
+        if (!eta) eta = std::make_shared<ConstantSpectrumTexture>(get_named_spectrum("metal-Cu-eta"));
+        if (!k) k = std::make_shared<ConstantSpectrumTexture>(get_named_spectrum("metal-Cu-k"));
+        check_spectrum_texture(params, "eta", eta, false, "positive");
+        check_spectrum_texture(params, "k", k, true, "non-negative");
+    }
+    MicrofacetRoughness roughness = read_roughness(params, textures);
+    return std::make_shared<ConductorMaterial>(eta, k, reflectance, roughness);
+}
+
+SpectrumTexturePtr read_reflectance(const ParameterDictionary &params, const NamedTextures &textures) {
+    return params.get_spectrum_texture("reflectance", std::make_shared<ConstantSpectrum>(0.5f),
+                                       SpectrumType::Albedo, textures);
+}
+
+} // namespace
+
+MaterialPtr create_material(const std::string &type, const ParameterDictionary &params,
+                            const NamedTextures &textures, const SourceLocation &loc) {
+    MaterialPtr material;
+    if (type == "interface") {
+        material = nullptr;
+    } else if (type == "diffuse") {
+        material = std::make_shared<DiffuseMaterial>(read_reflectance(params, textures));
+    } else if (type == "conductor") {
+        material = create_conductor(params, textures);
+    } else if (type == "dielectric") {
+        SpectrumPtr eta = read_ior(params);
+        MicrofacetRoughness roughness = read_roughness(params, textures);
+        material = std::make_shared<DielectricMaterial>(eta, roughness, read_interior_absorption(params));
+    } else if (type == "thindielectric") {
+        material = std::make_shared<ThinDielectricMaterial>(read_ior(params));
+    } else if (std::find(UnsupportedMaterials.begin(), UnsupportedMaterials.end(), type) !=
+               UnsupportedMaterials.end()) {
+        warning(loc, "material " + quoted(type) + " is not supported yet; rendering it as " +
+                         "\"diffuse\" with its \"reflectance\"");
+        // The other parameters belong to the unsupported model: listing them as unused would
+        // only repeat the warning above.
+        return std::make_shared<DiffuseMaterial>(read_reflectance(params, textures));
+    } else {
+        throw InputError(loc, "unknown material type " + quoted(type));
+    }
+    params.report_unused();
+    return material;
+}
+
+} // namespace caustica

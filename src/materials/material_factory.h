@@ -1,0 +1,38 @@
+// Creates materials from `Material "type" ...` / `MakeNamedMaterial` directives with pbrt-v4's
+// parameters and defaults:
+//  - "diffuse": "reflectance" (spectrum texture, default 0.5);
+//  - "conductor": "eta" / "k" (spectrum textures, default "metal-Cu-eta" / "metal-Cu-k"), or
+//    "reflectance" instead of both; "roughness" or "uroughness" / "vroughness" (default 0),
+//    "remaproughness" (default true);
+//  - "dielectric": "eta" (float, or a spectrum such as "glass-BK7"; default 1.5), roughness as
+//    for conductors, and Caustica extensions: "float sellmeierB" [B1 B2 B3] with "float
+//    sellmeierC" [C1 C2 C3] (C in um^2), or "float cauchyA" / "float cauchyB" (B in um^2),
+//    instead of "eta"; interior Beer-Lambert absorption from "sigma_a" (spectrum or rgb, per
+//    unit length) or from "rgb transmittance" with "float atDistance" (default 1);
+//  - "thindielectric": "eta" as for dielectric;
+//  - "interface": no material (nullptr): the surface only separates media.
+// Not supported yet: "coateddiffuse", "coatedconductor", "measured", "hair", "subsurface",
+// "mix", "diffusetransmission". These warn, naming the type, and render as "diffuse" with
+// their "reflectance" (default 0.5); their other parameters are ignored without further
+// warnings.
+//
+// Errors (InputError at the offending parameter): an unknown type (at loc), negative or NaN
+// roughness, a non-positive or NaN index of refraction, conflicting parameterisations (eta
+// together with Sellmeier/Cauchy coefficients or conductor reflectance together with eta/k),
+// negative absorption, a non-positive atDistance. Unused parameters produce warnings.
+#pragma once
+
+#include "core/error.h"
+#include "materials/material.h"
+#include "textures/texture.h"
+
+#include <string>
+
+namespace caustica {
+
+class ParameterDictionary;
+
+MaterialPtr create_material(const std::string &type, const ParameterDictionary &params,
+                            const NamedTextures &textures, const SourceLocation &loc);
+
+} // namespace caustica

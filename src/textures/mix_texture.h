@@ -1,0 +1,30 @@
+// pbrt-v4's "mix" texture: (1 - amount) tex1 + amount tex2, with a float texture "amount".
+#pragma once
+
+#include "textures/texture_evaluation.h"
+
+namespace caustica {
+
+template <typename Base> class MixTexture final : public TextureAdapter<Base, MixTexture<Base>> {
+  public:
+    MixTexture(TexturePtr<Base> tex1, TexturePtr<Base> tex2, FloatTexturePtr amount)
+        : tex1_(std::move(tex1)), tex2_(std::move(tex2)), amount_(std::move(amount)) {}
+
+    TextureValue<Base> value(const TextureEvalContext &ctx, const SampledWavelengths *lambda) const {
+        float amount = amount_->evaluate(ctx);
+        // Only the textures with a non-zero weight are evaluated.
+        TextureValue<Base> result(0.f);
+        if (amount != 1) result = evaluate_texture(*tex1_, ctx, lambda) * (1 - amount);
+        if (amount != 0) result = result + evaluate_texture(*tex2_, ctx, lambda) * amount;
+        return result;
+    }
+    bool children_wavelength_independent() const {
+        return wavelength_independent(*tex1_) && wavelength_independent(*tex2_);
+    }
+
+  private:
+    TexturePtr<Base> tex1_, tex2_;
+    FloatTexturePtr amount_;
+};
+
+} // namespace caustica

@@ -1,0 +1,138 @@
+#include "textures/texture_factory.h"
+
+#include "params/constant_textures.h"
+#include "params/parameters.h"
+#include "textures/bilerp_texture.h"
+#include "textures/checkerboard_texture.h"
+#include "textures/mix_texture.h"
+#include "textures/scale_texture.h"
+
+#include <algorithm>
+#include <array>
+
+namespace caustica {
+
+namespace {
+
+// pbrt-v4 texture types Caustica does not implement yet (see texture_factory.h).
+constexpr std::array UnsupportedTypes = {"imagemap", "ptex", "fbm", "wrinkled", "windy",
+                                         "marble", "dots", "directionmix"};
+constexpr float UnsupportedTextureValue = 0.5f;
+
+bool is_unsupported(const std::string &type) {
+    return std::find(UnsupportedTypes.begin(), UnsupportedTypes.end(), type) != UnsupportedTypes.end();
+}
+void warn_unsupported(const std::string &type, const SourceLocation &loc) {
+    warning(loc, "texture type \"" + type + "\" is not supported yet; using the constant " +
+                     "0.5 in its place");
+}
+
+TextureMapping2D create_mapping_2d(const Transform &render_from_texture,
+                                   const ParameterDictionary &params) {
+    std::string kind = params.get_one_string("mapping", "uv");
+    if (kind == "uv")
+        return TextureMapping2D::uv(params.get_one_float("uscale", 1), params.get_one_float("vscale", 1),
+                                    params.get_one_float("udelta", 0), params.get_one_float("vdelta", 0));
+    Transform texture_from_render = render_from_texture.inverse();
+    if (kind == "spherical") return TextureMapping2D::spherical(texture_from_render);
+    if (kind == "cylindrical") return TextureMapping2D::cylindrical(texture_from_render);
+    if (kind == "planar")
+        return TextureMapping2D::planar(texture_from_render,
+                                        params.get_one_vector3("v1", Vec3f(1, 0, 0)),
+                                        params.get_one_vector3("v2", Vec3f(0, 1, 0)),
+                                        params.get_one_float("udelta", 0),
+                                        params.get_one_float("vdelta", 0));
+    throw InputError(params.location("mapping"),
+                     "unknown texture mapping \"" + kind + "\" (expected \"uv\", \"spherical\", "
+                     "\"cylindrical\" or \"planar\")");
+}
+
+// Reads a child texture of either flavour with a constant default.
+struct FloatChildren {
+    const ParameterDictionary &params;
+    const NamedTextures &textures;
+    TexturePtr<FloatTexture> get(const std::string &name, float def) const {
+        return params.get_float_texture(name, def, textures);
+    }
+    TexturePtr<FloatTexture> constant(float v) const { return std::make_shared<ConstantFloatTexture>(v); }
+};
+struct SpectrumChildren {
+    const ParameterDictionary &params;
+    const NamedTextures &textures;
+    SpectrumType type;
+    TexturePtr<SpectrumTexture> get(const std::string &name, float def) const {
+        return params.get_spectrum_texture(name, std::make_shared<ConstantSpectrum>(def), type, textures);
+    }
+    TexturePtr<SpectrumTexture> constant(float v) const {
+        return std::make_shared<ConstantSpectrumTexture>(std::make_shared<ConstantSpectrum>(v));
+    }
+};
+
+// The types shared by both flavours; null for "constant", handled by the callers.
+template <typename Base, typename Children>
+TexturePtr<Base> create_composite(const std::string &type, const Transform &render_from_texture,
+                                  const ParameterDictionary &params, const Children &children,
+                                  const NamedTextures &textures, const SourceLocation &loc) {
+    if (type == "scale")
+        return std::make_shared<ScaleTexture<Base>>(children.get("tex", 1),
+                                                    params.get_float_texture("scale", 1, textures));
+    if (type == "mix")
+        return std::make_shared<MixTexture<Base>>(children.get("tex1", 0), children.get("tex2", 1),
+                                                  params.get_float_texture("amount", 0.5f, textures));
+    if (type == "checkerboard") {
+        int dimension = params.get_one_int("dimension", 2);
+        auto tex1 = children.get("tex1", 1), tex2 = children.get("tex2", 0);
+        if (dimension == 2)
+            return std::make_shared<CheckerboardTexture<Base>>(
+                create_mapping_2d(render_from_texture, params), tex1, tex2);
+        if (dimension == 3)
+            return std::make_shared<CheckerboardTexture<Base>>(
+                TextureMapping3D(render_from_texture.inverse()), tex1, tex2);
+        throw InputError(params.location("dimension"),
+                         "checkerboard \"dimension\" must be 2 or 3, not " + std::to_string(dimension));
+    }
+    if (type == "bilerp")
+        return std::make_shared<BilerpTexture<Base>>(create_mapping_2d(render_from_texture, params),
+                                                     children.get("v00", 0), children.get("v10", 0),
+                                                     children.get("v01", 1), children.get("v11", 1));
+    if (is_unsupported(type)) {
+        warn_unsupported(type, loc);
+        return children.constant(UnsupportedTextureValue);
+    }
+    throw InputError(loc, "unknown texture type \"" + type + "\"");
+}
+
+} // namespace
+
+FloatTexturePtr create_float_texture(const std::string &type, const Transform &render_from_texture,
+                                     const ParameterDictionary &params, const NamedTextures &textures,
+                                     const SourceLocation &loc) {
+    FloatTexturePtr result;
+    if (type == "constant")
+        result = std::make_shared<ConstantFloatTexture>(params.get_one_float("value", 1));
+    else
+        result = create_composite<FloatTexture>(type, render_from_texture, params,
+                                                FloatChildren{params, textures}, textures, loc);
+    // Parameters of an unsupported type were never looked at; the warning above already says so.
+    if (!is_unsupported(type)) params.report_unused();
+    return result;
+}
+
+SpectrumTexturePtr create_spectrum_texture(const std::string &type,
+                                           const Transform &render_from_texture,
+                                           const ParameterDictionary &params,
+                                           SpectrumType spectrum_type,
+                                           const NamedTextures &textures, const SourceLocation &loc) {
+    SpectrumTexturePtr result;
+    if (type == "constant")
+        result = std::make_shared<ConstantSpectrumTexture>(params.get_one_spectrum(
+            "value", std::make_shared<ConstantSpectrum>(1.f), spectrum_type));
+    else
+        result = create_composite<SpectrumTexture>(type, render_from_texture, params,
+                                                   SpectrumChildren{params, textures, spectrum_type},
+                                                   textures, loc);
+    if (!is_unsupported(type)) params.report_unused();
+    return result;
+}
+
+} // namespace caustica

@@ -1,0 +1,311 @@
+#include "core/rng.h"
+#include "film/film.h"
+#include "sampler/independent_sampler.h"
+#include "spectral/cie.h"
+
+#include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstring>
+
+using namespace caustica;
+
+namespace {
+
+ParsedParameter number_param(const std::string &type, const std::string &name, std::vector<double> v) {
+    ParsedParameter p;
+    p.type = type;
+    p.name = name;
+    p.numbers = std::move(v);
+    return p;
+}
+
+ParsedParameter string_param(const std::string &name, const std::string &v) {
+    ParsedParameter p;
+    p.type = "string";
+    p.name = name;
+    p.strings = {v};
+    return p;
+}
+
+ParameterDictionary dict(std::vector<ParsedParameter> params) {
+    return ParameterDictionary(std::move(params), SourceLocation{"scene.pbrt", 4, 1}, nullptr, ".");
+}
+
+Film make_film(Vec2i res, std::unique_ptr<Filter> filter, const RGBColorSpace &cs = RGBColorSpace::srgb(),
+               float imaging_ratio = 1, float max_component = Infinity, float white_balance = 0) {
+    return Film(res, PixelBounds{{0, 0}, res}, std::move(filter), cs, PixelSensor(cs, white_balance, imaging_ratio),
+                max_component, "out.exr", false);
+}
+
+// A spectrum divided by its CIE Y integral: pbrt-v4's photometric normalisation of lights, so
+// that its luminance Y (as the film measures it) is 1.
+class NormalisedSpectrum final : public Spectrum {
+  public:
+    explicit NormalisedSpectrum(const Spectrum &s) : s_(s), scale_(1 / inner_product_y(s)) {}
+    float operator()(float lambda) const override { return s_(lambda) * scale_; }
+    float max_value() const override { return s_.max_value() * scale_; }
+
+  private:
+    const Spectrum &s_;
+    float scale_;
+};
+
+// Feeds every pixel n hero-wavelength samples of spectrum s, with stratified wavelength
+// samples so the estimate converges quickly (error ~1e-4 for n = 2048).
+void add_spectrum(Film &film, const Spectrum &s, int n, bool single = false) {
+    Vec2i res = film.resolution();
+    for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x)
+            for (int i = 0; i < n; ++i) {
+                float u = (i + 0.5f) / n;
+                SampledWavelengths lambda =
+                    single ? SampledWavelengths::sample_single(u) : SampledWavelengths::sample_visible(u);
+                film.add_sample({x, y}, s.sample(lambda), lambda, 1);
+            }
+}
+
+void expect_grey(const Image &img, float value, float rel_tol) {
+    for (size_t i = 0; i < img.rgb.size(); ++i) EXPECT_NEAR(img.rgb[i], value, rel_tol * value) << i;
+}
+
+} // namespace
+
+TEST(Film, NormalisedWhiteIlluminantGivesUnitRgb) {
+    // The colour space's white illuminant normalised to Y = 1 is, by the definition of the
+    // space's white point, RGB (1, 1, 1). Bound: 0.5% (the estimate is within ~1e-4).
+    for (const RGBColorSpace *cs : {&RGBColorSpace::srgb(), &RGBColorSpace::rec2020(),
+                                    &RGBColorSpace::aces2065_1(), &RGBColorSpace::dci_p3()}) {
+        NormalisedSpectrum white(cs->illuminant());
+        Film film = make_film({3, 2}, std::make_unique<BoxFilter>(), *cs);
+        add_spectrum(film, white, 2048);
+        expect_grey(film.get_image(1), 1, 5e-3);
+        // One wavelength per path (secondaries terminated) estimates the same.
+        Film single = make_film({3, 2}, std::make_unique<BoxFilter>(), *cs);
+        add_spectrum(single, white, 4096, true);
+        expect_grey(single.get_image(1), 1, 5e-3);
+    }
+}
+
+TEST(Film, ImagingRatioScalesTheImage) {
+    NormalisedSpectrum d65(RGBColorSpace::srgb().illuminant());
+    Film film = make_film({2, 2}, std::make_unique<BoxFilter>(), RGBColorSpace::srgb(), 2.5f);
+    add_spectrum(film, d65, 1024);
+    expect_grey(film.get_image(1), 2.5f, 5e-3);
+    // Through the factory: exposure time 0.5 s at ISO 400 is an imaging ratio of 2.
+    auto f = create_film("rgb", dict({number_param("integer", "xresolution", {2}),
+                                      number_param("integer", "yresolution", {2}),
+                                      number_param("float", "iso", {400})}),
+                         nullptr, std::make_unique<BoxFilter>(), {}, {0, 0}, 0.5f);
+    add_spectrum(*f, d65, 1024);
+    expect_grey(f->get_image(1), 2, 5e-3);
+}
+
+TEST(Film, WhiteBalanceMakesTheIlluminantWhite) {
+    // With "whitebalance" T, light of pbrt-v4's illuminant for T (a blackbody below 4000 K,
+    // at the correlated colour temperature T * 1.4388 / 1.4380) comes out neutral.
+    const float t = 3000;
+    BlackbodySpectrum bb(t * 1.4388f / 1.4380f);
+    NormalisedSpectrum light(bb);
+    Film balanced = make_film({1, 1}, std::make_unique<BoxFilter>(), RGBColorSpace::srgb(), 1, Infinity, t);
+    add_spectrum(balanced, light, 4096);
+    expect_grey(balanced.get_image(1), 1, 5e-3);
+    // Unbalanced, the same light is clearly orange.
+    Film plain = make_film({1, 1}, std::make_unique<BoxFilter>());
+    add_spectrum(plain, light, 4096);
+    Image img = plain.get_image(1);
+    EXPECT_GT(img.rgb[0], 1.3f * img.rgb[2]);
+    // Balancing daylight 6500 K for a D65 space changes almost nothing.
+    Matrix3 m = PixelSensor(RGBColorSpace::srgb(), 6500, 1).xyz_from_sensor_rgb();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) EXPECT_NEAR(m[i][j], i == j ? 1 : 0, 3e-3);
+}
+
+TEST(Film, MonochromaticModeRecordsTheHeroEstimateAsGrey) {
+    Film film = make_film({2, 1}, std::make_unique<BoxFilter>());
+    film.set_monochromatic(true);
+    SampledWavelengths fixed = SampledWavelengths::fixed(600);
+    film.add_sample({0, 0}, SampledSpectrum(3.f), fixed, 1);
+    // With sampled wavelengths: (1/4) sum L_j / pdf_j.
+    SampledWavelengths lambda = SampledWavelengths::sample_visible(0.3f);
+    SampledSpectrum L(1, 2, 3, 4);
+    film.add_sample({1, 0}, L, lambda, 1);
+    Image img = film.get_image(1);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_FLOAT_EQ(img.at(0, 0, c), 3);
+        float expected = 0;
+        for (int j = 0; j < 4; ++j) expected += L[j] / lambda.pdf()[j] / 4;
+        EXPECT_NEAR(img.at(1, 0, c), expected, 1e-5f * expected);
+    }
+}
+
+TEST(Film, PixelIsTheFilterWeightedAverage) {
+    Film film = make_film({2, 2}, std::make_unique<BoxFilter>());
+    film.set_monochromatic(true);
+    SampledWavelengths l = SampledWavelengths::fixed(500);
+    film.add_sample({1, 1}, SampledSpectrum(2.f), l, 1);
+    film.add_sample({1, 1}, SampledSpectrum(6.f), l, 3);
+    film.add_sample({0, 1}, SampledSpectrum(5.f), l, 2);
+    film.add_sample({0, 1}, SampledSpectrum(1.f), l, -0.5f);  // negative lobe (Mitchell)
+    Image img = film.get_image(1);
+    EXPECT_FLOAT_EQ(img.at(1, 1, 0), (2 + 18) / 4.f);
+    EXPECT_FLOAT_EQ(img.at(0, 1, 1), (10 - 0.5f) / 1.5f);
+    EXPECT_EQ(img.at(0, 0, 2), 0);  // no samples: black
+}
+
+TEST(Film, MaxComponentValueClampsKeepingChromaticity) {
+    Film film = make_film({2, 1}, std::make_unique<BoxFilter>(), RGBColorSpace::srgb(), 1, 2);
+    film.set_monochromatic(true);
+    film.add_sample({0, 0}, SampledSpectrum(10.f), SampledWavelengths::fixed(500), 1);
+    film.add_sample({1, 0}, SampledSpectrum(1.5f), SampledWavelengths::fixed(500), 1);
+    Image img = film.get_image(1);
+    EXPECT_FLOAT_EQ(img.at(0, 0, 0), 2);
+    EXPECT_FLOAT_EQ(img.at(1, 0, 0), 1.5f);
+    // In colour the largest sensor (XYZ) component is clamped and the others scale with it.
+    Film colour = make_film({1, 1}, std::make_unique<BoxFilter>(), RGBColorSpace::srgb(), 1, 0.5f);
+    Film reference = make_film({1, 1}, std::make_unique<BoxFilter>());
+    SampledWavelengths lambda = SampledWavelengths::sample_visible(0.4f);
+    SampledSpectrum L(5, 1, 2, 3);
+    colour.add_sample({0, 0}, L, lambda, 1);
+    reference.add_sample({0, 0}, L, lambda, 1);
+    RGB xyz = PixelSensor(RGBColorSpace::srgb(), 0, 1).to_sensor_rgb(L, lambda);
+    float scale = 0.5f / xyz.max_component();
+    ASSERT_LT(scale, 1);
+    Image a = colour.get_image(1), b = reference.get_image(1);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.rgb[c], b.rgb[c] * scale, 1e-5f * std::abs(b.rgb[c]) + 1e-7f);
+}
+
+TEST(Film, SplatsAreFilteredAndNormalisedByTheFilterIntegral) {
+    SampledWavelengths l = SampledWavelengths::fixed(500);
+    Film box = make_film({4, 4}, std::make_unique<BoxFilter>());
+    box.set_monochromatic(true);
+    box.add_splat({1.3f, 2.7f}, SampledSpectrum(8.f), l);
+    box.add_splat({-3.f, 1.f}, SampledSpectrum(8.f), l);  // outside: ignored
+    Image img = box.get_image(0.25);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) EXPECT_NEAR(img.at(x, y, 0), (x == 1 && y == 2) ? 2 : 0, 1e-6f);
+
+    auto gaussian = std::make_unique<GaussianFilter>();
+    GaussianFilter g;
+    Film film = make_film({6, 4}, std::move(gaussian));
+    film.set_monochromatic(true);
+    film.add_splat({2.5f, 1.5f}, SampledSpectrum(1.f), l);  // the centre of pixel (2, 1)
+    Image gi = film.get_image(2);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 6; ++x) {
+            float expected = 2 * g.evaluate({float(2 - x), float(1 - y)}) / g.integral();
+            EXPECT_NEAR(gi.at(x, y, 0), expected, 1e-6f + 1e-6f * expected);
+        }
+    EXPECT_GT(gi.at(3, 1, 0), 0);
+    EXPECT_EQ(gi.at(5, 1, 0), 0);  // 3 pixels away: beyond the radius 1.5
+}
+
+TEST(Film, SplatsAreIdenticalForAnyThreadCount) {
+    // Contributions spanning eight orders of magnitude at random positions: a floating-point
+    // sum would depend on the order of the additions, and so on the thread count.
+    auto render = [](int threads) {
+        Film film = make_film({16, 8}, std::make_unique<GaussianFilter>());
+        const int n = 200000;
+        tbb::task_arena arena(threads);
+        arena.execute([&] {
+            tbb::parallel_for(0, n, [&](int i) {
+                Rng rng(uint64_t(i), 99);
+                Vec2f p{rng.uniform() * 18 - 1, rng.uniform() * 10 - 1};
+                SampledWavelengths lambda = SampledWavelengths::sample_visible(rng.uniform());
+                float magnitude = std::pow(10.f, rng.uniform() * 8 - 5);
+                film.add_splat(p, SampledSpectrum(magnitude, 2 * magnitude, 0.5f * magnitude, magnitude),
+                               lambda);
+            });
+        });
+        return film.get_image(1e-3);
+    };
+    Image one = render(1), two = render(2), four = render(4);
+    ASSERT_EQ(one.rgb.size(), two.rgb.size());
+    EXPECT_EQ(std::memcmp(one.rgb.data(), two.rgb.data(), one.rgb.size() * sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(one.rgb.data(), four.rgb.data(), one.rgb.size() * sizeof(float)), 0);
+    float total = 0;
+    for (float v : one.rgb) total += v;
+    EXPECT_GT(total, 0);
+}
+
+TEST(Film, CameraSampleLiesInThePixelsFilterFootprint) {
+    IndependentSampler sampler(1, 3);
+    GaussianFilter gaussian;
+    BoxFilter box;
+    for (int i = 0; i < 2000; ++i) {
+        Vec2i pixel{i % 7, i / 7};
+        sampler.start_pixel_sample(pixel, i);
+        CameraSample b = get_camera_sample(sampler, pixel, box);
+        EXPECT_GE(b.p_film.x, pixel.x);
+        EXPECT_LE(b.p_film.x, pixel.x + 1);
+        EXPECT_GE(b.p_film.y, pixel.y);
+        EXPECT_LE(b.p_film.y, pixel.y + 1);
+        EXPECT_EQ(b.filter_weight, 1);
+        EXPECT_GE(b.p_lens.x, 0);
+        EXPECT_LT(b.p_lens.x, 1);
+        sampler.start_pixel_sample(pixel, i);
+        CameraSample g = get_camera_sample(sampler, pixel, gaussian);
+        EXPECT_LE(std::abs(g.p_film.x - pixel.x - 0.5f), 1.5f);
+        EXPECT_LE(std::abs(g.p_film.y - pixel.y - 0.5f), 1.5f);
+        EXPECT_GT(g.filter_weight, 0);
+        // The lens sample follows the pixel sample in the same dimensions for any filter.
+        EXPECT_EQ(g.p_lens.x, b.p_lens.x);
+    }
+}
+
+TEST(FilmFactory, ReadsPbrtParametersAndCropWindows) {
+    set_warnings_enabled(false);
+    SourceLocation loc{"scene.pbrt", 4, 1};
+    auto f = create_film("rgb", dict({}), nullptr, std::make_unique<GaussianFilter>(), loc);
+    EXPECT_EQ(f->resolution(), (Vec2i{1280, 720}));
+    EXPECT_EQ(f->filename(), "pbrt.exr");
+    EXPECT_FALSE(f->save_fp16());
+    EXPECT_EQ(&f->color_space(), &RGBColorSpace::srgb());
+
+    f = create_film("rgb",
+                    dict({number_param("integer", "xresolution", {8}), number_param("integer", "yresolution", {4}),
+                          number_param("float", "cropwindow", {0.75, 0.25, 0, 0.5}),
+                          string_param("filename", "img.exr")}),
+                    &RGBColorSpace::rec2020(), std::make_unique<GaussianFilter>(), loc);
+    EXPECT_EQ(f->filename(), "img.exr");
+    EXPECT_EQ(f->pixel_bounds(), (PixelBounds{{2, 0}, {6, 2}}));
+    FilmExtent e = f->extent();
+    EXPECT_EQ(e.full_resolution, (Vec2i{8, 4}));
+    EXPECT_FLOAT_EQ(e.sample_min.x, 1);  // 2 - 1.5 + 0.5
+    EXPECT_FLOAT_EQ(e.sample_max.y, 3);  // 2 + 1.5 - 0.5
+    f->set_monochromatic(true);
+    f->add_sample({5, 1}, SampledSpectrum(1.f), SampledWavelengths::fixed(500), 1);
+    Image img = f->get_image(1);
+    EXPECT_EQ(img.width, 4);
+    EXPECT_EQ(img.height, 2);
+    EXPECT_EQ(img.origin, (Vec2i{2, 0}));
+    EXPECT_EQ(img.full_resolution, (Vec2i{8, 4}));
+    EXPECT_EQ(img.at(3, 1, 0), 1);
+
+    f = create_film("rgb", dict({number_param("integer", "pixelbounds", {1, 3, 2, 20})}), nullptr,
+                    std::make_unique<BoxFilter>(), loc, {10, 5});
+    EXPECT_EQ(f->resolution(), (Vec2i{10, 5}));
+    EXPECT_EQ(f->pixel_bounds(), (PixelBounds{{1, 2}, {3, 5}}));  // clamped to the image
+    EXPECT_EQ(create_film("gbuffer", dict({}), nullptr, std::make_unique<BoxFilter>(), loc)->resolution().x, 1280);
+    EXPECT_NE(create_film("spectral", dict({}), nullptr, std::make_unique<BoxFilter>(), loc), nullptr);
+    EXPECT_NE(create_film("rgb", dict({string_param("sensor", "canon_eos_100d")}), nullptr,
+                          std::make_unique<BoxFilter>(), loc),
+              nullptr);
+    set_warnings_enabled(true);
+}
+
+TEST(FilmFactory, RejectsBadInput) {
+    SourceLocation loc{"scene.pbrt", 4, 1};
+    auto make = [&](const std::string &type, std::vector<ParsedParameter> p) {
+        return create_film(type, dict(std::move(p)), nullptr, std::make_unique<BoxFilter>(), loc);
+    };
+    EXPECT_THROW(make("image", {}), InputError);
+    EXPECT_THROW(make("rgb", {number_param("integer", "xresolution", {0})}), InputError);
+    EXPECT_THROW(make("rgb", {number_param("float", "cropwindow", {0, 1, 0})}), InputError);
+    EXPECT_THROW(make("rgb", {number_param("float", "cropwindow", {0.5, 0.5, 0, 1})}), InputError);
+    EXPECT_THROW(make("rgb", {number_param("float", "whitebalance", {-5})}), InputError);
+    EXPECT_THROW(make("rgb", {number_param("float", "whitebalance", {40000})}), InputError);
+    EXPECT_THROW(make("rgb", {number_param("float", "maxcomponentvalue", {0})}), InputError);
+}
