@@ -61,7 +61,7 @@ SampledSpectrum PerspectiveCamera::We(const Ray &ray, const SampledWavelengths &
     if (!inside) return SampledSpectrum(0.f);
     // Uniform over the lens and over the image plane at z = 1; the density of a direction per
     // unit image-plane area is cos^3, and one more cosine converts radiance to irradiance.
-    return SampledSpectrum(1 / (image_area_ * lens_area() * sqr(cos_theta) * cos_theta));
+    return SampledSpectrum(1 / (image_area_ * lens_area() * sqr(sqr(cos_theta))));
 }
 
 void PerspectiveCamera::pdf_we(const Ray &ray, float *pdf_pos, float *pdf_dir) const {

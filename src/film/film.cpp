@@ -2,7 +2,7 @@
 
 #include <cassert>
 #include <cmath>
-#include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace caustica {
@@ -54,6 +54,9 @@ void Film::add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavele
                       float filter_weight) {
     assert(!L.has_non_finite() && std::isfinite(filter_weight));
     assert(pixel_bounds_.contains(pixel));
+    // Outside a crop window there is no storage: dropping the sample keeps a caller that
+    // iterates the full frame from corrupting memory in release builds.
+    if (!pixel_bounds_.contains(pixel)) return;
     RGB v = sensor_value(L, lambda);
     Pixel &p = pixels_[index(pixel)];
     for (int c = 0; c < 3; ++c) p.rgb_sum[c] += double(filter_weight) * v[c];
@@ -62,6 +65,7 @@ void Film::add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavele
 
 void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda) {
     assert(!L.has_non_finite());
+    if (!std::isfinite(p_raster.x) || !std::isfinite(p_raster.y)) return;
     RGB v = sensor_value(L, lambda);
     // The pixels whose centres lie within the filter's radius of p.
     Vec2f r = filter_->radius();

@@ -69,8 +69,9 @@ class Film {
     void set_monochromatic(bool on) { monochromatic_ = on; }
     bool monochromatic() const { return monochromatic_; }
 
-    // A camera sample for `pixel` (inside pixel_bounds()). L must be finite: integrators count
-    // and drop non-finite estimates before they reach the film.
+    // A camera sample for `pixel`, which must lie inside pixel_bounds() (iterate those, not the
+    // full resolution, when a crop window is set; samples outside are dropped). L must be
+    // finite: integrators count and drop non-finite estimates before they reach the film.
     void add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavelengths &lambda,
                     float filter_weight);
     // A light-tracing contribution at a raster position; reaches every pixel within the

@@ -15,8 +15,9 @@ struct Ray {
 
 // Moves p off the surface along the geometric normal n, to the side of direction w, by more than
 // the rounding error p can carry. That error grows with the magnitude of the coordinates (p is
-// interpolated from vertices, or reprojected and transformed), so the offset is 2^-15 (256 to
-// 512 ulps) of the largest coordinate, and 2^-16 near the origin. Moving exactly along n, rather
+// interpolated from vertices, or reprojected and transformed, each a few ulps), so the offset is
+// 2^-18 (32 to 64 ulps) of the largest coordinate, and 2^-16 near the origin. (Grazing rays in
+// tests/geometry first re-hit surfaces at 2^-22; thin features favour a small offset.) Moving exactly along n, rather
 // than by a number of ulps per axis as Wachter and Binder 2019 (Ray Tracing Gems ch. 6) do, keeps
 // the offset parallel to the surface's neighbours: per-axis ulps differ when coordinates differ in
 // magnitude, and the tilted offset then pushes origins near a concave edge through the adjacent
@@ -24,7 +25,7 @@ struct Ray {
 // pbrt-v3/v4 (Pharr et al., "Physically Based Rendering", section 3.9.5).
 // p must be computed on the surface (barycentric interpolation or reprojection), not as o + t d.
 inline Vec3f offset_ray_origin(Vec3f p, Vec3f n, Vec3f w) {
-    constexpr float relative_offset = 0x1p-15f;
+    constexpr float relative_offset = 0x1p-18f;
     constexpr float min_offset = 0x1p-16f;
     float offset = std::max(min_offset, relative_offset * max_component(abs(p)));
     if (dot(n, w) < 0) n = -n;

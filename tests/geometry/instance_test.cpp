@@ -63,6 +63,9 @@ TEST(Instances, AnalyticShapesAndMirroredInstances) {
     EXPECT_NEAR(si.t, 8, 1e-5);
     expect_near_vec(si.p, {0, 0, 8}, 1e-5f);
     expect_near_vec(si.n, {0, 0, -1}, 1e-6f);
+    EXPECT_TRUE(scene.occluded({{0, 0, 0}, {0, 0, 1}, 8.5f}));
+    EXPECT_FALSE(scene.occluded({{0, 0, 0}, {0, 0, 1}, 7.5f}));
+    EXPECT_FALSE(scene.occluded({{3, 0, 0}, {0, 0, 1}}));
     Bounds3f b = scene.bounds();
     EXPECT_LE(b.lo.z, 8);
     EXPECT_GE(b.hi.z, 12);
@@ -85,15 +88,6 @@ TEST(Instances, AreaLightsAndCountsForDirectShapes) {
     ASSERT_TRUE(scene.intersect({{0.2f, 0.7f, 1}, {0, 0, -1}}, &si));
     EXPECT_EQ(si.area_light, l1);
     EXPECT_EQ(si.face_index, 1);
-}
-
-TEST(GeometryScene, EmptySceneMissesEverything) {
-    GeometryScene scene;
-    scene.commit();
-    SurfaceInteraction si;
-    EXPECT_FALSE(scene.intersect({{0, 0, 0}, {0, 0, 1}}, &si));
-    EXPECT_FALSE(scene.occluded({{0, 0, 0}, {0, 0, 1}}));
-    EXPECT_TRUE(scene.bounds().empty());
 }
 
 } // namespace

@@ -86,13 +86,14 @@ TEST_P(LargeCoordinates, ClosedBoxDoesNotLeak) {
         SurfaceInteraction si;
         ASSERT_TRUE(scene->intersect(ray, &si));
         for (int bounce = 0; bounce < 10; ++bounce) {
-            // A hit within rounding distance (64 ulps of the coordinates) of an edge may lie on
-            // the far side of the adjacent wall, and no offset along its own normal can bring it
-            // back: such bounces are not held to the no-leak rule (about 0.1% of them here).
+            // A hit within rounding distance (8 ulps of the coordinates) of an edge may lie on the
+            // far side of the adjacent wall, and no offset along its own normal can bring it
+            // back: such bounces are not held to the no-leak rule (a small fraction of them).
             Vec3f local = local_from_render.apply_point(si.p);
-            float edge_tolerance = 64 * 0x1p-23f * max_component(abs(si.p));
+            float edge_tolerance = 8 * 0x1p-23f * max_component(abs(si.p));
             int walls_near = 0;
-            for (int i = 0; i < 3; ++i) walls_near += std::abs(std::abs(local[i]) - half) < edge_tolerance;
+            for (int i = 0; i < 3; ++i)
+                walls_near += std::abs(std::abs(local[i]) - half) < edge_tolerance;
             bool at_edge = walls_near >= 2;
             at_edges += at_edge;
             // Box normals face outwards; continue inwards.

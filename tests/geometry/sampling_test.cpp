@@ -137,6 +137,36 @@ std::shared_ptr<const TriangleMesh> single_triangle(Vec3f a, Vec3f b, Vec3f c) {
     return test::mesh_group({}, false, {0, 1, 2}, {a, b, c})->mesh;
 }
 
+// Uniform in solid angle: the share of samples landing in each of the four midpoint
+// sub-triangles equals its share of the solid angle. With 1e5 samples a share's standard
+// deviation is below 0.0016, so the 0.008 bound fails only for a real bias.
+void expect_uniform_over_subtriangles(const Triangle &tri, Vec3f p0, Vec3f p1, Vec3f p2,
+                                      Vec3f ref) {
+    Vec3f m01 = (p0 + p1) * 0.5f, m12 = (p1 + p2) * 0.5f, m20 = (p2 + p0) * 0.5f;
+    Triangle sub[4] = {Triangle(single_triangle(p0, m01, m20), 0),
+                       Triangle(single_triangle(m01, p1, m12), 0),
+                       Triangle(single_triangle(m20, m12, p2), 0),
+                       Triangle(single_triangle(m01, m12, m20), 0)};
+    Vec3f n = normalize(cross(p1 - p0, p2 - p0));
+    double omega = tri.solid_angle(ref);
+    int counts[4] = {};
+    Rng rng(6, 6);
+    const int n_samples = 100000;
+    for (int i = 0; i < n_samples; ++i) {
+        auto ss = tri.sample(ref, rng.uniform2());
+        ASSERT_TRUE(ss);
+        ASSERT_NEAR(dot(ss->p - p0, n), 0, 1e-5f); // on the triangle's plane
+        Vec3f w = normalize(ss->p - ref);
+        for (int k = 0; k < 4; ++k)
+            if (sub[k].intersect(ref, w, Infinity)) {
+                ++counts[k];
+                break;
+            }
+    }
+    for (int k = 0; k < 4; ++k)
+        EXPECT_NEAR(counts[k] / double(n_samples), sub[k].solid_angle(ref) / omega, 0.008) << k;
+}
+
 TEST(TriangleSampling, SphericalTriangleOfAnOctant) {
     // Any triangle with one vertex on each positive axis covers an octant of directions seen from
     // the origin: pi / 2.
@@ -149,32 +179,23 @@ TEST(TriangleSampling, SphericalTriangleOfAnOctant) {
     EXPECT_LT(stats.max_pdf_mismatch, 1e-5);
     EXPECT_NEAR(integrate_pdf(tri, ref), 1, 2e-3);
 
-    // Uniform in solid angle: the share of samples landing in each of the four midpoint
-    // sub-triangles equals its share of the solid angle. With 1e5 samples a share's standard
-    // deviation is below 0.0016, so the 0.008 bound fails only for a real bias.
-    Vec3f p0{1, 0, 0}, p1{0, 2, 0}, p2{0, 0, 3};
-    Vec3f m01 = (p0 + p1) * 0.5f, m12 = (p1 + p2) * 0.5f, m20 = (p2 + p0) * 0.5f;
-    Triangle sub[4] = {Triangle(single_triangle(p0, m01, m20), 0),
-                       Triangle(single_triangle(m01, p1, m12), 0),
-                       Triangle(single_triangle(m20, m12, p2), 0),
-                       Triangle(single_triangle(m01, m12, m20), 0)};
-    int counts[4] = {};
-    Rng rng(6, 6);
-    const int n = 100000;
-    for (int i = 0; i < n; ++i) {
-        auto ss = tri.sample(ref, rng.uniform2());
-        ASSERT_TRUE(ss);
-        // On the triangle's plane x + y/2 + z/3 = 1.
-        ASSERT_NEAR(ss->p.x + ss->p.y / 2 + ss->p.z / 3, 1, 1e-5);
-        Vec3f w = normalize(ss->p);
-        for (int k = 0; k < 4; ++k)
-            if (sub[k].intersect(ref, w, Infinity)) {
-                ++counts[k];
-                break;
-            }
-    }
-    for (int k = 0; k < 4; ++k)
-        EXPECT_NEAR(counts[k] / double(n), sub[k].solid_angle(ref) / (Pi / 2), 0.008) << k;
+    expect_uniform_over_subtriangles(tri, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, ref);
+}
+
+TEST(TriangleSampling, NearlyHemisphericalTriangle) {
+    // Seen from just above, a large triangle covers most of the hemisphere.
+    Vec3f p0{-10, -10, 0}, p1{10, -10, 0}, p2{0, 10, 0};
+    Triangle tri(single_triangle(p0, p1, p2), 0);
+    Vec3f ref{0.5f, -2, 1};
+    double omega = tri.solid_angle(ref);
+    EXPECT_GT(omega, 4);
+    SampleStats stats = sample_from(tri, ref);
+    EXPECT_EQ(stats.failures, 0);
+    EXPECT_NEAR(stats.mean_inverse_pdf, omega, 1e-5 * omega);
+    EXPECT_LT(stats.max_pdf_mismatch, 1e-5);
+    EXPECT_NEAR(integrate_pdf(tri, ref), 1, 2e-3);
+    EXPECT_NEAR(solid_angle_by_casting(tri, ref), omega, 2e-3 * omega);
+    expect_uniform_over_subtriangles(tri, p0, p1, p2, ref);
 }
 
 TEST(TriangleSampling, SmallAndGrazingTrianglesUseAreaSampling) {
