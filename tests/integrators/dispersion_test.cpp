@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <vector>
 #include <cmath>
 #include <optional>
 
@@ -89,15 +91,19 @@ double predicted_column(double lambda_nm) {
     return (lo + hi) / 2;
 }
 
-// Intensity-weighted centroid of the brightest run along the centre rows.
+// Where the refracted line crosses the centre rows: the intensity-weighted centroid within 4
+// pixels of the brightest column. (A fainter, undispersed copy of the line, reflected by the
+// prism's faces, appears elsewhere in the image and must not pull the centroid.)
 double measured_column(const RgbImage &img) {
+    std::vector<double> column(img.width, 0.0);
+    for (int y = kHeight / 2 - 3; y < kHeight / 2 + 3; ++y)
+        for (int x = 0; x < img.width; ++x) column[x] += img.at(x, y, 1);
+    int peak = int(std::max_element(column.begin(), column.end()) - column.begin());
     double sum = 0, weighted = 0;
-    for (int y = kHeight / 2 - 10; y < kHeight / 2 + 10; ++y)
-        for (int x = 0; x < img.width; ++x) {
-            double v = img.at(x, y, 1);
-            sum += v;
-            weighted += v * (x + 0.5);
-        }
+    for (int x = std::max(0, peak - 4); x <= std::min(img.width - 1, peak + 4); ++x) {
+        sum += column[x];
+        weighted += column[x] * (x + 0.5);
+    }
     return weighted / sum;
 }
 
