@@ -33,6 +33,13 @@ class Integrator {
     // Renders into scene.film. Deterministic for a seed and sample count, whatever the threads.
     virtual void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                         const ProgressCallback &progress) = 0;
+    // The factor the film's splats are scaled by when the image is made (Film::get_image) after
+    // render() has filled in stats. Integrators that only add camera samples leave it at 1.
+    virtual double splat_scale(const Scene &scene, const RenderStats &stats) const {
+        (void)scene;
+        (void)stats;
+        return 1;
+    }
 };
 
 // Creates the integrator named by scene.integrator_name; throws InputError for unknown names.

@@ -1,5 +1,6 @@
 #include "core/error.h"
 #include "integrators/integrator.h"
+#include "integrators/lt/light_tracer.h"
 #include "integrators/pt/path_tracer.h"
 #include "scene/scene.h"
 
@@ -7,6 +8,8 @@ namespace caustica {
 
 std::unique_ptr<Integrator> create_integrator(const Scene &scene) {
     if (scene.integrator_name == "pt") return std::make_unique<PathTracer>(scene.integrator_params);
+    if (scene.integrator_name == "lt")
+        return std::make_unique<LightTracer>(scene.integrator_params, scene);
     throw InputError(scene.integrator_location,
                      "integrator \"" + scene.integrator_name + "\" is not available in this build");
 }

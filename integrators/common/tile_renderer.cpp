@@ -45,9 +45,9 @@ std::vector<Tile> make_tiles(const PixelBounds &bounds) {
 
 } // namespace
 
-void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
-                  const ProgressCallback &progress, const RadianceFunction &radiance) {
-    Film &film = *scene.film;
+void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                           const ProgressCallback &progress, const PixelSampleFunction &work) {
+    const Film &film = *scene.film;
     const std::vector<Tile> tiles = make_tiles(film.pixel_bounds());
     const uint64_t pixel_count = uint64_t(film.pixel_bounds().width()) * film.pixel_bounds().height();
     const bool timed = budget.seconds > 0;
@@ -79,26 +79,14 @@ void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &s
         tiles_done = 0;
         tbb::parallel_for(size_t(0), tiles.size(), [&](size_t t) {
             ThreadState &ts = states.local();
+            PixelSampleContext ctx{*ts.sampler, *ts.scratch, ts.rays, ts.non_finite};
             const Tile &tile = tiles[t];
             for (int y = tile.lo.y; y < tile.hi.y; ++y)
                 for (int x = tile.lo.x; x < tile.hi.x; ++x) {
                     Vec2i pixel{x, y};
                     for (int s = first; s < first + wave; ++s) {
-                        Sampler &sampler = *ts.sampler;
-                        sampler.start_pixel_sample(pixel, s);
-                        SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
-                        CameraSample cs = get_camera_sample(sampler, pixel, film.filter());
-                        SampledSpectrum L;
-                        if (auto ray = scene.camera->generate_ray(cs, lambda)) {
-                            L = radiance(*ray, lambda, sampler, *ts.scratch, ts.rays) * ray->weight;
-                            // A non-finite value is a bug to fix at its source; it is counted
-                            // (reported in the stats) and never reaches the film.
-                            if (L.has_non_finite()) {
-                                ++ts.non_finite;
-                                L = SampledSpectrum(0.f);
-                            }
-                        }
-                        film.add_sample(pixel, L, lambda, cs.filter_weight);
+                        ts.sampler->start_pixel_sample(pixel, s);
+                        work(pixel, s, ctx);
                         ts.scratch->reset();
                     }
                 }
@@ -117,6 +105,27 @@ void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &s
     }
     stats.samples_per_pixel = done;
     stats.seconds = elapsed();
+}
+
+void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                  const ProgressCallback &progress, const RadianceFunction &radiance) {
+    Film &film = *scene.film;
+    for_each_pixel_sample(scene, budget, stats, progress, [&](Vec2i pixel, int, PixelSampleContext &ctx) {
+        Sampler &sampler = ctx.sampler;
+        SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
+        CameraSample cs = get_camera_sample(sampler, pixel, film.filter());
+        SampledSpectrum L;
+        if (auto ray = scene.camera->generate_ray(cs, lambda)) {
+            L = radiance(*ray, lambda, sampler, ctx.scratch, ctx.rays) * ray->weight;
+            // A non-finite value is a bug to fix at its source; it is counted (reported in the
+            // stats) and never reaches the film.
+            if (L.has_non_finite()) {
+                ++ctx.non_finite;
+                L = SampledSpectrum(0.f);
+            }
+        }
+        film.add_sample(pixel, L, lambda, cs.filter_weight);
+    });
 }
 
 } // namespace caustica

@@ -22,6 +22,26 @@ using RadianceFunction = std::function<SampledSpectrum(const CameraRay &ray, Sam
 // Samples the path's wavelengths as the scene's overrides ask (hero, single, or fixed).
 SampledWavelengths sample_wavelengths(const Scene &scene, float u);
 
+// What the work for one (pixel, sample index) may use: the thread's sampler, already started at
+// that pixel and index, its scratch memory (reset after every sample) and its counters.
+struct PixelSampleContext {
+    Sampler &sampler;
+    ScratchBuffer &scratch;
+    uint64_t &rays;
+    uint64_t &non_finite;
+};
+
+using PixelSampleFunction = std::function<void(Vec2i pixel, int sample_index, PixelSampleContext &ctx)>;
+
+// Calls work(pixel, s) for every pixel of the film's pixel bounds and s = 0, 1, ... up to the
+// budget's sample count (or until its time is used), tile by tile in parallel. Fills in
+// stats.rays, non_finite_samples, samples_per_pixel (the samples completed for every pixel) and
+// seconds, and reports progress after each tile.
+void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                           const ProgressCallback &progress, const PixelSampleFunction &work);
+
+// Camera-path rendering on top of for_each_pixel_sample: one camera ray per pixel sample, its
+// radiance estimate added to the film at that pixel.
 void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                   const ProgressCallback &progress, const RadianceFunction &radiance);
 

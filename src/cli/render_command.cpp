@@ -97,7 +97,7 @@ int run_render(const RenderCommandOptions &options) {
                        [&progress](double fraction, uint64_t samples) { progress.update(fraction, samples); });
     progress.finish();
 
-    Image image = scene->film->get_image(1.0);
+    Image image = scene->film->get_image(integrator->splat_scale(*scene, stats));
     std::map<std::string, std::string> metadata = {
         {"caustica:integrator", scene->integrator_name},
         {"caustica:spp", std::to_string(stats.samples_per_pixel)},

@@ -29,7 +29,13 @@ std::string caustica_integrator_name(const std::string &name) {
 namespace {
 
 // Integrators this build can run; the others arrive with the bidirectional work.
-const std::set<std::string> available_integrators = {"pt"};
+const std::set<std::string> available_integrators = {"lt", "pt"};
+
+std::string available_integrator_list() {
+    std::string list;
+    for (const std::string &name : available_integrators) list += (list.empty() ? "" : ", ") + name;
+    return list;
+}
 
 void choose_integrator(const SceneDescription &d, const RenderOverrides &ov, Scene &scene) {
     scene.integrator_params = d.integrator.params;
@@ -37,7 +43,8 @@ void choose_integrator(const SceneDescription &d, const RenderOverrides &ov, Sce
     if (!ov.integrator.empty()) {
         std::string name = caustica_integrator_name(ov.integrator);
         if (name.empty() || !available_integrators.count(name))
-            throw InputError("--integrator: \"" + ov.integrator + "\" is not an available integrator (available: pt)");
+            throw InputError("--integrator: \"" + ov.integrator + "\" is not an available integrator (available: " +
+                             available_integrator_list() + ")");
         scene.integrator_name = name;
         return;
     }
