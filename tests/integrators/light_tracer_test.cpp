@@ -95,8 +95,9 @@ TEST(LightTracerCornellBox, AgreesWithPathTracerReferenceOverBlocks) {
         }
     ASSERT_GT(ratio_count, 100);
     const double k = ratio_sum / ratio_count;
-    // The filter (pbrt's default Gaussian, radius 1.5) spreads a splat over a few pixels: the
-    // correlation must show, and cannot exceed the number of pixels one splat reaches (9).
+    // The filter (pbrt's default Gaussian, radius 1.5) spreads a splat over at most 3x3 pixels:
+    // the correlation must show, and the footprint alone inflates a block's variance by less
+    // than 9 (several vertices of one path landing in one block add little on top).
     EXPECT_GT(k, 1.2);
     EXPECT_LT(k, 9.0);
 
@@ -142,6 +143,42 @@ TEST(LightTracerCornellBox, OneAndTwoThreadsGiveBitIdenticalImages) {
     size_t differing = 0;
     for (size_t i = 0; i < a.rgb.size(); ++i) differing += a.rgb[i] != c.rgb[i];
     EXPECT_GT(differing, a.rgb.size() / 2);
+}
+
+// With a crop window, one light path per rendered pixel is traced per iteration while the camera's
+// importance is normalised over the whole frame: splats are scaled by N_full / (N_crop * spp)
+// (1/spp alone would make this crop, a quarter of the frame, four times too dark). The crop's
+// mean must match the same region of the reference. Its noise at 32 iterations is below 1% (the
+// region receives a quarter of the splats of 4096 * 32 paths; the block test above bounds the
+// per-block noise), so 4% is a bias bound that a factor of 4 (or 1/4) cannot pass.
+TEST(LightTracerCornellBox, CropWindowKeepsTheImageScale) {
+    std::string dir = scratch_dir("lt-cornell-crop");
+    std::string text = read_text(kScene);
+    const std::string film_name = "\"string filename\" \"cornell-box.exr\"";
+    size_t at = text.find(film_name);
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at + film_name.size(), " \"float cropwindow\" [ 0.25 0.75 0.5 1 ]");
+    std::string scene = dir + "/crop.pbrt";
+    std::FILE *f = std::fopen(scene.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fwrite(text.data(), 1, text.size(), f);
+    std::fclose(f);
+
+    std::string out = dir + "/crop.exr";
+    ASSERT_EQ(run_caustica("render " + scene + " --quiet --integrator lt --spp 32 --seed 21 -o " + out), 0);
+    RgbImage crop = read_rgb(out);
+    RgbImage ref = read_rgb(data_path("renderer/cornell-box.pt-4096spp.exr"));
+    ASSERT_EQ(crop.width, ref.width / 2);
+    ASSERT_EQ(crop.height, ref.height / 2);
+    for (int c = 0; c < 3; ++c) {
+        double sum = 0, ref_sum = 0;
+        for (int y = 0; y < crop.height; ++y)
+            for (int x = 0; x < crop.width; ++x) {
+                sum += crop.at(x, y, c);
+                ref_sum += ref.at(x + ref.width / 4, y + ref.height / 2, c);
+            }
+        EXPECT_NEAR(sum / ref_sum, 1.0, 0.04) << "channel " << c;
+    }
 }
 
 std::string integrator_metadata(const std::string &path) {
