@@ -15,12 +15,19 @@ class Scene;
 struct RenderBudget {
     int spp = 16;
     double seconds = 0;   // > 0: render until this much wall time has passed (spp is then a cap)
+    // Set asynchronously (by a signal handler) to stop the render as soon as possible; what was
+    // accumulated stays in the film, correctly normalised.
+    const std::atomic<bool> *cancel = nullptr;
 };
 
 struct RenderStats {
     std::atomic<uint64_t> rays{0};              // camera, bounce and shadow rays traced
     std::atomic<uint64_t> non_finite_samples{0};// caught, counted and dropped
     int samples_per_pixel = 0;                  // completed for every pixel
+    // Pixel samples actually taken, over the film's pixel bounds: differs from
+    // samples_per_pixel * pixels when a render is interrupted part-way through a sweep.
+    std::atomic<uint64_t> pixel_samples{0};
+    bool interrupted = false;
     double seconds = 0;
 };
 

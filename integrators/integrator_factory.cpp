@@ -1,4 +1,5 @@
 #include "core/error.h"
+#include "integrators/bdpt/bdpt.h"
 #include "integrators/integrator.h"
 #include "integrators/lt/light_tracer.h"
 #include "integrators/pt/path_tracer.h"
@@ -10,6 +11,7 @@ std::unique_ptr<Integrator> create_integrator(const Scene &scene) {
     if (scene.integrator_name == "pt") return std::make_unique<PathTracer>(scene.integrator_params);
     if (scene.integrator_name == "lt")
         return std::make_unique<LightTracer>(scene.integrator_params, scene);
+    if (scene.integrator_name == "bdpt") return std::make_unique<BDPT>(scene.integrator_params, scene);
     throw InputError(scene.integrator_location,
                      "integrator \"" + scene.integrator_name + "\" is not available in this build");
 }

@@ -33,6 +33,7 @@ struct ThreadState {
     std::unique_ptr<ScratchBuffer> scratch = std::make_unique<ScratchBuffer>();
     uint64_t rays = 0;
     uint64_t non_finite = 0;
+    uint64_t pixel_samples = 0;
 };
 
 std::vector<Tile> make_tiles(const PixelBounds &bounds) {
@@ -63,12 +64,15 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
         return s;
     });
 
+    auto cancelled = [&] { return budget.cancel && budget.cancel->load(std::memory_order_relaxed); };
     std::atomic<uint64_t> tiles_done{0};
     int done = 0;
     while (done < spp_cap) {
-        // A fixed budget renders all samples in one sweep (best locality); a time budget sweeps
-        // in waves sized from the measured cost per sample so the deadline is not overshot.
-        int wave = spp_cap - done;
+        // Sweeps over the image in waves of doubling size (1, 1, 2, 4, ... 64 samples per
+        // pixel), so that an interrupted render holds the whole image at a lower sample count;
+        // a time budget sizes its waves from the measured cost per sample instead, so the
+        // deadline is not overshot.
+        int wave = std::min({spp_cap - done, std::max(done, 1), 64});
         if (timed) {
             double per_spp = done > 0 ? elapsed() / done : 0;
             double remaining = budget.seconds - elapsed();
@@ -85,9 +89,14 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
                 for (int x = tile.lo.x; x < tile.hi.x; ++x) {
                     Vec2i pixel{x, y};
                     for (int s = first; s < first + wave; ++s) {
+                        // Checked per sample so an interruption is honoured within one sample's
+                        // time; the film normalises each pixel by its own weight, so pixels with
+                        // fewer samples are still correct.
+                        if (cancelled()) return;
                         ts.sampler->start_pixel_sample(pixel, s);
                         work(pixel, s, ctx);
                         ts.scratch->reset();
+                        ++ts.pixel_samples;
                     }
                 }
             uint64_t n = ++tiles_done;
@@ -96,12 +105,17 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
                                : (double(first) + double(wave) * n / tiles.size()) / spp_cap,
                          uint64_t(double(pixel_count) * (first + double(wave) * n / tiles.size())));
         });
+        if (cancelled()) {
+            stats.interrupted = true;
+            break;
+        }
         done += wave;
         if (timed && elapsed() >= budget.seconds) break;
     }
     for (ThreadState &ts : states) {
         stats.rays += ts.rays;
         stats.non_finite_samples += ts.non_finite;
+        stats.pixel_samples += ts.pixel_samples;
     }
     stats.samples_per_pixel = done;
     stats.seconds = elapsed();

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "geometry/interaction.h"
+#include "integrators/common/path_vertex.h"
 #include "integrators/common/tile_renderer.h"
 #include "scene/scene.h"
 
@@ -22,19 +23,6 @@ LightTracer::LightTracer(const ParameterDictionary &params, const Scene &scene)
 }
 
 namespace {
-
-// The cosine factor of an importance-transport scattering event at si, light arriving from wo
-// and leaving towards wi, including the correction that makes shading normals reciprocal for
-// adjoint transport (Veach 1997, section 5.3; pbrt-v4's LightPathIntegrator): the BSDF's cosine
-// |wi.ns| times |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|). Light paths sample directions per solid angle
-// and reach the next vertex through its geometric normal, while the scattering equation weighs
-// incident light by the shading normal, so the factors do not cancel as they do for radiance.
-// |wi.ns| cancels in the product, which is therefore written without it (it may be zero).
-float importance_cosine(const SurfaceInteraction &si, Vec3f wo, Vec3f wi) {
-    float wo_ng = abs_dot(wo, si.n);
-    if (wo_ng == 0) return 0;
-    return abs_dot(wo, si.shading.n) * abs_dot(wi, si.n) / wo_ng;
-}
 
 struct LightPathContext {
     const Scene &scene;
@@ -191,10 +179,12 @@ void LightTracer::render(const Scene &scene, const RenderBudget &budget, RenderS
 // N_crop light paths per iteration (one per rendered pixel) the factor is
 // N_full / (N_crop * iterations): 1/spp, as in pbrt-v4, when the whole image is rendered.
 double LightTracer::splat_scale(const Scene &scene, const RenderStats &stats) const {
-    if (stats.samples_per_pixel == 0) return 0;
+    // One light path per pixel sample: divide by the light paths traced per pixel of the full
+    // frame. Counting the paths actually traced (not whole iterations) keeps an interrupted
+    // render, which stops part-way through an iteration, correctly normalised.
+    if (stats.pixel_samples == 0) return 0;
     const Vec2i full = scene.film->resolution();
-    const PixelBounds &bounds = scene.film->pixel_bounds();
-    return double(full.x) * full.y / (double(bounds.width()) * bounds.height() * stats.samples_per_pixel);
+    return double(full.x) * full.y / double(stats.pixel_samples);
 }
 
 } // namespace caustica

@@ -9,6 +9,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -32,6 +33,26 @@ void parse_resolution(const std::string &text, int *w, int *h) {
         throw InputError("--resolution expects WxH with 1 <= W, H <= 65536, got \"" + text + "\"");
 }
 
+// SIGINT / SIGTERM stop the render: the handler only raises a flag (a lock-free atomic store is
+// async-signal-safe); the render loop sees it within one sample and the command then writes
+// what was accumulated. The handlers reset themselves, so a second signal ends the process.
+std::atomic<bool> interrupt_requested{false};
+volatile std::sig_atomic_t interrupt_signal = 0;
+
+extern "C" void request_interrupt(int signal_number) {
+    interrupt_signal = signal_number;
+    interrupt_requested.store(true, std::memory_order_relaxed);
+}
+
+void install_interrupt_handlers() {
+    struct sigaction action {};
+    action.sa_handler = request_interrupt;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
 double peak_memory_mib() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
@@ -52,6 +73,7 @@ void write_stats_json(const std::string &path, const Scene &scene, const RenderS
         << "  \"rays\": " << stats.rays.load() << ",\n"
         << "  \"rays_per_second\": " << rays_per_second << ",\n"
         << "  \"non_finite_samples\": " << stats.non_finite_samples.load() << ",\n"
+        << "  \"partial\": " << (stats.interrupted ? "true" : "false") << ",\n"
         << "  \"peak_memory_mib\": " << peak_memory_mib() << "\n"
         << "}\n";
     if (!out) throw std::runtime_error("failed writing statistics to \"" + path + "\"");
@@ -86,7 +108,9 @@ int run_render(const RenderCommandOptions &options) {
     int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, threads);
 
+    install_interrupt_handlers();
     RenderBudget budget;
+    budget.cancel = &interrupt_requested;
     budget.spp = scene->sampler->samples_per_pixel();
     budget.seconds = options.seconds;
     if (options.seconds > 0 && options.spp == 0) budget.spp = 0; // time alone decides
@@ -103,11 +127,18 @@ int run_render(const RenderCommandOptions &options) {
         {"caustica:spp", std::to_string(stats.samples_per_pixel)},
         {"caustica:seed", std::to_string(options.seed)},
         {"caustica:scene", options.scene_path},
+        {"caustica:partial", stats.interrupted ? "true" : "false"},
     };
     if (!exr_path.empty()) write_exr(exr_path, image, metadata);
     if (!png_path.empty()) write_png(png_path, image);
     if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads);
 
+    if (stats.interrupted) {
+        // Shell convention: 128 + the signal number (130 for SIGINT, 143 for SIGTERM).
+        std::fprintf(stderr, "interrupted: wrote the partial image (%llu pixel samples)\n",
+                     (unsigned long long)stats.pixel_samples.load());
+        return 128 + int(interrupt_signal);
+    }
     if (!options.quiet) {
         std::fprintf(stderr, "rendered %d spp in %.2fs, %.2fM rays/s, %llu non-finite samples dropped\n",
                      stats.samples_per_pixel, stats.seconds,

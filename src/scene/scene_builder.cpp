@@ -29,7 +29,7 @@ std::string caustica_integrator_name(const std::string &name) {
 namespace {
 
 // Integrators this build can run; the others arrive with the bidirectional work.
-const std::set<std::string> available_integrators = {"lt", "pt"};
+const std::set<std::string> available_integrators = {"bdpt", "lt", "pt"};
 
 std::string available_integrator_list() {
     std::string list;

@@ -70,4 +70,36 @@ inline double block_mean(const RgbImage &img, int x0, int y0, int size, int c) {
     return sum / (size * size);
 }
 
+// Per block and channel: the block mean of (A + B) / 2, the unbiased 1-degree-of-freedom
+// estimate D^2 / 4 of its variance from the block means' difference D = mean(A) - mean(B), and
+// the estimate from the per-pixel differences, sum_i (A_i - B_i)^2 / 4 / n^2 over the block's n
+// pixels, which is exact in expectation only when the pixels' errors are independent.
+struct BlockEstimate {
+    double mean = 0, variance_from_blocks = 0, variance_from_pixels = 0;
+};
+
+inline std::vector<BlockEstimate> block_estimates(const RgbImage &a, const RgbImage &b, int block) {
+    std::vector<BlockEstimate> blocks;
+    for (int by = 0; by + block <= a.height; by += block)
+        for (int bx = 0; bx + block <= a.width; bx += block)
+            for (int c = 0; c < 3; ++c) {
+                BlockEstimate e;
+                double difference = 0;
+                for (int y = by; y < by + block; ++y)
+                    for (int x = bx; x < bx + block; ++x) {
+                        double va = a.at(x, y, c), vb = b.at(x, y, c);
+                        e.mean += (va + vb) / 2;
+                        difference += va - vb;
+                        e.variance_from_pixels += (va - vb) * (va - vb) / 4;
+                    }
+                const double n = block * block;
+                e.mean /= n;
+                difference /= n;
+                e.variance_from_blocks = difference * difference / 4;
+                e.variance_from_pixels /= n * n;
+                blocks.push_back(e);
+            }
+    return blocks;
+}
+
 } // namespace caustica::testing

@@ -1,0 +1,328 @@
+#include "integrators/bdpt/bdpt.h"
+
+#include "camera/camera.h"
+#include "core/error.h"
+#include "integrators/bdpt/mis_weight.h"
+#include "integrators/common/path_vertex.h"
+#include "integrators/common/tile_renderer.h"
+#include "scene/scene.h"
+
+#include <new>
+#include <type_traits>
+
+namespace caustica {
+
+BDPT::BDPT(const ParameterDictionary &params, const Scene &scene)
+    : max_depth_(params.get_one_int("maxdepth", 5)) {
+    if (max_depth_ < 0)
+        throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
+    if (!scene.camera->models_importance())
+        throw InputError(scene.integrator_location,
+                         "bidirectional path tracing (bdpt) needs a camera whose importance is "
+                         "modelled (perspective); this scene's camera has none");
+    params.report_unused();
+}
+
+namespace {
+
+struct SubpathContext {
+    const Scene &scene;
+    SampledWavelengths &lambda;
+    PixelSampleContext &sample;
+};
+
+// Extends the subpath whose last vertex is path[count - 1] by following ray, whose direction
+// was sampled there with solid-angle density pdf_fwd, until max_count vertices exist; returns the
+// new count. beta is the throughput carried by the ray. Camera subpaths (Radiance) that leave
+// the scene end in a vertex at infinity when there are environment lights to receive.
+int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float pdf_fwd,
+                TransportMode mode, PathVertex *path, int count, int max_count) {
+    const Scene &scene = ctx.scene;
+    const Material *absorbing_interior = nullptr;
+    while (count < max_count) {
+        SurfaceInteraction si;
+        ++ctx.sample.rays;
+        bool hit = scene.intersect(ray, &si);
+        if (absorbing_interior) {
+            // Beer-Lambert absorption over the segment (as the path tracer does); a ray
+            // leaving to infinity inside an absorber is absorbed entirely.
+            if (!hit) break;
+            beta *= exp(-absorbing_interior->interior_sigma_a(ctx.lambda) * (si.t * length(ray.d)));
+            if (beta.is_black()) break;
+        }
+        PathVertex &prev = path[count - 1];
+        if (!hit) {
+            if (mode == TransportMode::Radiance && !scene.infinite_lights.empty()) {
+                PathVertex &v = path[count++];
+                v = PathVertex{};
+                v.type = PathVertexType::Light;
+                v.at_infinity = true;
+                v.si.p = ray.o + normalize(ray.d);
+                v.beta = beta;
+                v.pdf_fwd = pdf_fwd; // solid angle, the measure of a vertex at infinity
+            }
+            break;
+        }
+        if (!si.material) {
+            // A medium boundary without a surface: continue straight through.
+            ray = si.spawn_ray(ray.d);
+            continue;
+        }
+        BSDF bsdf = si.material->get_bsdf(si, ctx.lambda, ctx.sample.scratch);
+        if (!bsdf) {
+            ray = si.spawn_ray(ray.d);
+            continue;
+        }
+        PathVertex &v = path[count++];
+        v = PathVertex{};
+        v.type = PathVertexType::Surface;
+        v.si = si;
+        v.bsdf = bsdf;
+        v.beta = beta;
+        v.pdf_fwd = prev.convert_density(pdf_fwd, v);
+        if (count == max_count) break;
+
+        Sampler &sampler = ctx.sample.sampler;
+        float u = sampler.get_1d();
+        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), mode);
+        if (!bs) break;
+        // Hero-wavelength sampling (Wilkie et al. 2014): a wavelength-dependent direction is
+        // valid for the hero alone. The sample's other contributions lose their secondary
+        // lanes when they are made (see trace_sample).
+        if (bs->dispersive && !ctx.lambda.secondary_terminated()) ctx.lambda.terminate_secondary();
+        pdf_fwd = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, mode) : bs->pdf;
+        const float cosine = mode == TransportMode::Radiance ? abs_dot(bs->wi, si.shading.n)
+                                                             : importance_cosine(si, si.wo, bs->wi);
+        beta *= bs->f * (cosine / bs->pdf);
+        // Density of the reverse step, from wi back to wo, with the adjoint transport mode.
+        const TransportMode reverse = mode == TransportMode::Radiance ? TransportMode::Importance
+                                                                      : TransportMode::Radiance;
+        float pdf_rev = bsdf.pdf(bs->wi, si.wo, reverse);
+        if (bs->is_specular()) {
+            v.delta = true;
+            pdf_rev = pdf_fwd = 0;
+        }
+        if (bs->is_transmission() && si.material->has_interior_absorption())
+            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        path[count - 2].pdf_rev = v.convert_density(pdf_rev, path[count - 2]);
+        ray = si.spawn_ray(bs->wi);
+        if (beta.is_black()) break;
+    }
+    return count;
+}
+
+// The camera subpath: the lens vertex, then up to max_count - 1 scattering vertices.
+int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathVertex *path,
+                   int max_count) {
+    PathVertex &lens = path[0];
+    lens = PathVertex{};
+    lens.type = PathVertexType::Camera;
+    lens.si.p = camera_ray.ray.o;
+    lens.beta = camera_ray.weight;
+    float pdf_pos, pdf_dir;
+    ctx.scene.camera->pdf_we(camera_ray.ray, &pdf_pos, &pdf_dir);
+    return random_walk(ctx, camera_ray.ray, camera_ray.weight, pdf_dir, TransportMode::Radiance, path,
+                       1, max_count);
+}
+
+// The light subpath: a light chosen by power, an emitted ray, then scattering vertices.
+int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
+    const Scene &scene = ctx.scene;
+    Sampler &sampler = ctx.sample.sampler;
+    auto chosen = scene.light_sampler->sample(sampler.get_1d());
+    Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
+    if (!chosen || max_count == 0) return 0;
+    const Light &light = *chosen->light;
+    auto les = light.sample_le(u_position, u_direction, ctx.lambda);
+    if (!les || les->L.is_black() || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return 0;
+
+    PathVertex &origin = path[0];
+    origin = PathVertex{};
+    origin.type = PathVertexType::Light;
+    origin.light = &light;
+    origin.at_infinity = light.type() == LightType::Infinite || light.type() == LightType::DeltaDirection;
+    origin.si.p = les->ray.o;
+    origin.si.n = origin.si.shading.n = les->n;
+    origin.beta = les->L / (chosen->pmf * les->pdf_pos);
+    origin.pdf_fwd = chosen->pmf * les->pdf_pos;
+
+    const Vec3f d = normalize(les->ray.d);
+    const float cos_origin = origin.on_surface() ? abs_dot(les->n, d) : 1.f;
+    int count = random_walk(ctx, les->ray, origin.beta * (cos_origin / les->pdf_dir), les->pdf_dir,
+                            TransportMode::Importance, path, 1, max_count);
+    if (origin.at_infinity) {
+        // Rays from infinity start on a disk across the scene: the first vertex's area density
+        // is the disk's times the cosine there (no distance falloff), and the origin's density is
+        // that of its direction (pbrt-v4 section 16.3.3).
+        if (count > 1) {
+            path[1].pdf_fwd = les->pdf_pos;
+            if (path[1].on_surface()) path[1].pdf_fwd *= abs_dot(d, path[1].ng());
+        }
+        PathVertex along_ray;
+        along_ray.si.p = origin.p() + d;
+        origin.pdf_fwd = origin.pdf_light_origin(scene, along_ray);
+    }
+    return count;
+}
+
+bool visible(const Scene &scene, const PathVertex &a, const PathVertex &b, uint64_t &rays) {
+    ++rays;
+    return !scene.occluded(spawn_ray_to(a.p(), a.ng(), b.p(), b.ng()));
+}
+
+struct Connection {
+    SampledSpectrum L{0.f};
+    bool splat = false;
+    Vec2f p_raster;
+};
+
+// The contribution of strategy (s, t), MIS-weighted.
+Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVertex *camera_vertices,
+                   int s, int t) {
+    const Scene &scene = ctx.scene;
+    Sampler &sampler = ctx.sample.sampler;
+    uint64_t &rays = ctx.sample.rays;
+    Connection c;
+    // A camera subpath that escaped is only ever an emitter (s = 0).
+    if (t > 1 && s != 0 && camera_vertices[t - 1].type == PathVertexType::Light) return c;
+
+    PathVertex sampled;
+    SampledSpectrum L(0.f);
+    if (s == 0) {
+        const PathVertex &pt = camera_vertices[t - 1];
+        if (pt.is_light()) L = pt.Le(scene, camera_vertices[t - 2], ctx.lambda) * pt.beta;
+    } else if (t == 1) {
+        // Join the light subpath's end to a sampled lens point; the result lands on the film
+        // where that direction images.
+        const PathVertex &qs = light_vertices[s - 1];
+        if (!qs.connectible() || qs.at_infinity) return c;
+        auto cs = scene.camera->sample_wi(qs.p(), sampler.get_2d(), ctx.lambda);
+        if (!cs || !(cs->pdf > 0)) return c;
+        sampled = PathVertex{};
+        sampled.type = PathVertexType::Camera;
+        sampled.si.p = cs->p_lens;
+        sampled.beta = cs->We / cs->pdf;
+        if (qs.type == PathVertexType::Light) {
+            // The light point itself (s = 1): emission towards the lens, with the cosine at
+            // the light, over the densities of the point.
+            L = qs.light->L(qs.p(), qs.ng(), Vec2f{}, cs->wi, ctx.lambda) *
+                (abs_dot(qs.ng(), cs->wi) / qs.pdf_fwd);
+        } else {
+            L = qs.beta * qs.bsdf.f(qs.si.wo, cs->wi, TransportMode::Importance) *
+                importance_cosine(qs.si, qs.si.wo, cs->wi);
+        }
+        L *= sampled.beta;
+        if (L.is_black() || !visible(scene, sampled, qs, rays)) return c;
+        c.splat = true;
+        c.p_raster = cs->p_raster;
+    } else if (s == 1) {
+        // Sample a point on a light from the camera subpath's end (next-event estimation).
+        const PathVertex &pt = camera_vertices[t - 1];
+        if (!pt.connectible()) return c;
+        auto chosen = scene.light_sampler->sample(sampler.get_1d());
+        Vec2f u = sampler.get_2d();
+        if (!chosen) return c;
+        const LightSampleContext lctx{pt.p(), pt.ng(), pt.ns()};
+        auto ls = chosen->light->sample_li(lctx, u, ctx.lambda);
+        if (!ls || ls->L.is_black() || !(ls->pdf > 0)) return c;
+        sampled = PathVertex{};
+        sampled.type = PathVertexType::Light;
+        sampled.light = chosen->light;
+        sampled.at_infinity = ls->is_infinite;
+        // A point at infinity stands for its direction; any point along it serves.
+        sampled.si.p = ls->is_infinite ? pt.p() + ls->wi : ls->p_light;
+        sampled.si.n = sampled.si.shading.n = ls->is_infinite ? Vec3f{} : ls->n_light;
+        sampled.beta = ls->L / (chosen->pmf * ls->pdf);
+        sampled.pdf_fwd = sampled.pdf_light_origin(scene, pt);
+        L = pt.beta * pt.bsdf.f(pt.si.wo, ls->wi, TransportMode::Radiance) *
+            (abs_dot(ls->wi, pt.ns())) * sampled.beta;
+        if (L.is_black()) return c;
+        ++rays;
+        Ray shadow = ls->is_infinite ? pt.si.spawn_ray(ls->wi) : pt.si.spawn_ray_to(ls->p_light, ls->n_light);
+        if (scene.occluded(shadow)) return c;
+    } else {
+        // Join two scattering vertices with a shadow ray: both BSDFs and the geometry term
+        // (shading-normal cosines, adjoint-corrected on the light side, over distance^2).
+        const PathVertex &qs = light_vertices[s - 1], &pt = camera_vertices[t - 1];
+        if (!qs.connectible() || !pt.connectible()) return c;
+        Vec3f d = pt.p() - qs.p();
+        float dist2 = length_squared(d);
+        if (dist2 == 0) return c;
+        d = d / std::sqrt(dist2);
+        L = qs.beta * qs.bsdf.f(qs.si.wo, d, TransportMode::Importance) *
+            importance_cosine(qs.si, qs.si.wo, d) * pt.bsdf.f(pt.si.wo, -d, TransportMode::Radiance) *
+            (abs_dot(d, pt.ns()) / dist2) * pt.beta;
+        if (L.is_black() || !visible(scene, qs, pt, rays)) return c;
+    }
+    if (L.is_black()) return c;
+    c.L = L * bdpt_mis_weight(scene, light_vertices, camera_vertices, sampled, s, t);
+    return c;
+}
+
+// n default vertices in the sample's scratch memory (released with it: vertices own nothing).
+PathVertex *new_vertices(ScratchBuffer &scratch, int n) {
+    static_assert(std::is_trivially_destructible_v<PathVertex>);
+    auto *vertices = static_cast<PathVertex *>(scratch.allocate(sizeof(PathVertex) * n, alignof(PathVertex)));
+    for (int i = 0; i < n; ++i) new (&vertices[i]) PathVertex();
+    return vertices;
+}
+
+// Keeps only the hero wavelength's value once the sample's wavelengths were terminated.
+SampledSpectrum hero_only(SampledSpectrum L, const SampledWavelengths &lambda) {
+    if (lambda.secondary_terminated())
+        for (int i = 1; i < NumWavelengths; ++i) L[i] = 0;
+    return L;
+}
+
+} // namespace
+
+void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                  const ProgressCallback &progress) {
+    const int max_depth = max_depth_;
+    Film &film = *scene.film;
+    for_each_pixel_sample(scene, budget, stats, progress, [&](Vec2i pixel, int, PixelSampleContext &sample) {
+        Sampler &sampler = sample.sampler;
+        SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
+        CameraSample cs = get_camera_sample(sampler, pixel, film.filter());
+        SampledSpectrum L(0.f);
+        auto camera_ray = scene.camera->generate_ray(cs, lambda);
+        if (camera_ray) {
+            SubpathContext ctx{scene, lambda, sample};
+            // A path of depth d (bounces) has d + 2 vertices: the camera subpath may need all of
+            // them (s = 0), the light subpath all but the lens point (t = 1).
+            PathVertex *camera_vertices = new_vertices(sample.scratch, max_depth + 2);
+            PathVertex *light_vertices = new_vertices(sample.scratch, max_depth + 1);
+            const int n_camera = camera_subpath(ctx, *camera_ray, camera_vertices, max_depth + 2);
+            const int n_light = light_subpath(ctx, light_vertices, max_depth + 1);
+            for (int t = 1; t <= n_camera; ++t)
+                for (int s = 0; s <= n_light; ++s) {
+                    const int depth = s + t - 2;
+                    if (depth < 0 || depth > max_depth) continue;
+                    Connection c = connect(ctx, light_vertices, camera_vertices, s, t);
+                    if (c.L.is_black()) continue;
+                    SampledSpectrum contribution = hero_only(c.L, lambda);
+                    // A non-finite value is a bug to fix at its source; counted, never filmed.
+                    if (contribution.has_non_finite()) {
+                        ++sample.non_finite;
+                        continue;
+                    }
+                    if (c.splat)
+                        film.add_splat(c.p_raster, contribution, lambda);
+                    else
+                        L += contribution;
+                }
+        }
+        film.add_sample(pixel, L, lambda, cs.filter_weight);
+    });
+}
+
+// As for the light tracer: one light subpath per rendered pixel and sample, and importance
+// normalised over the whole frame, so splats count N_full / (N_crop * spp) each.
+double BDPT::splat_scale(const Scene &scene, const RenderStats &stats) const {
+    if (stats.samples_per_pixel == 0) return 0;
+    const Vec2i full = scene.film->resolution();
+    const PixelBounds &bounds = scene.film->pixel_bounds();
+    return double(full.x) * full.y / (double(bounds.width()) * bounds.height() * stats.samples_per_pixel);
+}
+
+} // namespace caustica
