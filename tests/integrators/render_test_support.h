@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace caustica::testing {
 
 struct RgbImage {
@@ -35,9 +37,11 @@ inline std::string data_path(const std::string &relative) {
     return std::string(CAUSTICA_TEST_DATA) + "/" + relative;
 }
 
-// A fresh directory under the build tree for one test's outputs.
+// A fresh directory for one test's outputs, unique to the process so that concurrent test runs
+// (ctest -j, or two checkouts tested at once) never share one.
 inline std::string scratch_dir(const std::string &name) {
-    auto dir = std::filesystem::temp_directory_path() / ("caustica-test-" + name);
+    auto dir = std::filesystem::temp_directory_path() /
+               ("caustica-test-" + name + "-" + std::to_string(getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir.string();
