@@ -316,13 +316,13 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     });
 }
 
-// As for the light tracer: one light subpath per rendered pixel and sample, and importance
-// normalised over the whole frame, so splats count N_full / (N_crop * spp) each.
+// As for the light tracer: one light subpath per pixel sample, and importance normalised over
+// the whole frame, so each splat counts 1 / (light subpaths traced per pixel of the full frame).
+// Counting the subpaths actually traced keeps an interrupted render correctly normalised.
 double BDPT::splat_scale(const Scene &scene, const RenderStats &stats) const {
-    if (stats.samples_per_pixel == 0) return 0;
+    if (stats.pixel_samples == 0) return 0;
     const Vec2i full = scene.film->resolution();
-    const PixelBounds &bounds = scene.film->pixel_bounds();
-    return double(full.x) * full.y / (double(bounds.width()) * bounds.height() * stats.samples_per_pixel);
+    return double(full.x) * full.y / double(stats.pixel_samples);
 }
 
 } // namespace caustica

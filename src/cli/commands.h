@@ -20,6 +20,7 @@ struct RenderCommandOptions {
     std::string stats_json;     // empty: no statistics file
     float wavelength = 0;       // > 0: monochromatic render at this wavelength in nm
     bool single_wavelength = false;
+    bool variance_layer = false; // add a "variance" layer to the EXR
     bool quiet = false;
 };
 

@@ -108,6 +108,7 @@ int run_render(const RenderCommandOptions &options) {
     int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, threads);
 
+    if (options.variance_layer) scene->film->enable_variance();
     install_interrupt_handlers();
     RenderBudget budget;
     budget.cancel = &interrupt_requested;

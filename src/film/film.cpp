@@ -61,6 +61,15 @@ void Film::add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavele
     Pixel &p = pixels_[index(pixel)];
     for (int c = 0; c < 3; ++c) p.rgb_sum[c] += double(filter_weight) * v[c];
     p.weight_sum += filter_weight;
+    if (!moments_.empty()) {
+        RGB out = monochromatic_ ? v : output_from_sensor_ * v;
+        Moments &m = moments_[index(pixel)];
+        for (int c = 0; c < 3; ++c) {
+            m.sum[c] += out[c];
+            m.sum_sq[c] += double(out[c]) * out[c];
+        }
+        ++m.count;
+    }
 }
 
 void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda) {
@@ -110,6 +119,19 @@ Image Film::get_image(double splat_scale) const {
             if (!monochromatic_) v = output_from_sensor_ * v;
             for (int c = 0; c < 3; ++c) image.at(x, y, c) = v[c];
         }
+    if (!moments_.empty()) {
+        Image::Layer variance{"variance", std::vector<float>(image.rgb.size(), 0.f)};
+        for (size_t i = 0; i < moments_.size(); ++i) {
+            const Moments &m = moments_[i];
+            if (m.count < 2) continue;
+            for (int c = 0; c < 3; ++c) {
+                double mean = m.sum[c] / m.count;
+                double sample_variance = std::max(0.0, (m.sum_sq[c] - m.count * mean * mean) / (m.count - 1));
+                variance.rgb[i * 3 + c] = float(sample_variance / m.count);
+            }
+        }
+        image.layers.push_back(std::move(variance));
+    }
     if (splat_overflow_.exchange(false))
         warning("light-tracing contributions exceeded the film's fixed-point range; the image "
                 "is wrong where they landed");

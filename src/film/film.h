@@ -67,6 +67,11 @@ class Film {
     // (1/n) sum_j L_j / pdf_j (times the imaging ratio) in every channel, with no colour
     // conversion.
     void set_monochromatic(bool on) { monochromatic_ = on; }
+    // Also keep per-pixel first and second moments of the camera samples' output RGB, so that
+    // get_image() adds a "variance" layer: the estimated variance of each pixel's mean
+    // (s^2 / n). It assumes equal sample weights, which pbrt's filter importance sampling gives
+    // for non-negative filters; light-tracing splats are not included.
+    void enable_variance() { moments_.assign(pixels_.size(), Moments{}); }
     bool monochromatic() const { return monochromatic_; }
 
     // A camera sample for `pixel`, which must lie inside pixel_bounds() (iterate those, not the
@@ -93,6 +98,10 @@ class Film {
         double rgb_sum[3] = {0, 0, 0};
         double weight_sum = 0;
     };
+    struct Moments {
+        double sum[3] = {0, 0, 0}, sum_sq[3] = {0, 0, 0};
+        uint64_t count = 0;
+    };
 
     Vec2i full_resolution_;
     PixelBounds pixel_bounds_;
@@ -107,6 +116,7 @@ class Film {
     bool monochromatic_ = false;
 
     std::vector<Pixel> pixels_;
+    std::vector<Moments> moments_; // empty unless enable_variance()
     std::vector<std::atomic<int64_t>> splats_;  // 3 per pixel, fixed point
     mutable std::atomic<bool> splat_overflow_{false};
 };

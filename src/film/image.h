@@ -4,6 +4,7 @@
 #include "core/vecmath.h"
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace caustica {
@@ -17,6 +18,12 @@ struct Image {
     Vec2i full_resolution{0, 0};
     // Three floats (R, G, B) per pixel, rows from the top of the image down.
     std::vector<float> rgb;
+    // Extra RGB layers with the same layout (e.g. "variance"), written to EXR as NAME.R/G/B.
+    struct Layer {
+        std::string name;
+        std::vector<float> rgb;
+    };
+    std::vector<Layer> layers;
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), full_resolution{w, h}, rgb(size_t(w) * h * 3, 0.f) {}

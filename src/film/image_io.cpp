@@ -67,6 +67,9 @@ void check_image(const std::string &path, const Image &image) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != size_t(image.width) * image.height * 3)
         throw write_error(path, "the image is empty or inconsistent");
+    for (const Image::Layer &layer : image.layers)
+        if (layer.rgb.size() != image.rgb.size())
+            throw write_error(path, "layer \"" + layer.name + "\" does not match the image size");
 }
 
 } // namespace
@@ -103,6 +106,12 @@ void write_exr(const std::string &path, const Image &image,
                                                      3 * sizeof(float)));
             }
         }
+        for (const Image::Layer &layer : image.layers)
+            for (int c = 0; c < 3; ++c) {
+                std::string channel = layer.name + "." + names[c];
+                header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+                fb.insert(channel, Imf::Slice::Make(Imf::FLOAT, layer.rgb.data() + c, data, 3 * sizeof(float)));
+            }
         Imf::OutputFile file(tmp.c_str(), header);
         file.setFrameBuffer(fb);
         file.writePixels(image.height);
