@@ -40,6 +40,13 @@ int main(int argc, char **argv) {
     CLI::App *info_cmd = app.add_subcommand("info", "Describe what a scene contains");
     info_cmd->add_option("scene", info_scene, "Scene file (.pbrt)")->required();
 
+    DiffCommandOptions diff;
+    CLI::App *diff_cmd = app.add_subcommand("diff", "Error metrics of an EXR image against a reference");
+    diff_cmd->add_option("image", diff.image_path, "Image (.exr)")->required();
+    diff_cmd->add_option("reference", diff.reference_path, "Reference (.exr)")->required();
+    diff_cmd->add_option("--threshold", diff.threshold, "Exit with status 1 when the relative MSE exceeds this")
+        ->check(CLI::NonNegativeNumber);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
@@ -50,6 +57,7 @@ int main(int argc, char **argv) {
     try {
         if (*render_cmd) return run_render(render);
         if (*info_cmd) return run_info(info_scene);
+        if (*diff_cmd) return run_diff(diff);
     } catch (const InputError &e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 2;

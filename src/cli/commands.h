@@ -24,7 +24,21 @@ struct RenderCommandOptions {
     bool quiet = false;
 };
 
+struct DiffCommandOptions {
+    std::string image_path, reference_path;
+    double threshold = -1; // >= 0: exit 1 when the relative MSE exceeds it
+};
+
+// Error of an image against a reference, over all pixels and channels: root mean squared
+// error, relative MSE (x - r)^2 / (r^2 + 0.01) and mean relative difference |x - r| / (|r| + 0.01).
+struct ImageDifference {
+    double rmse = 0, relative_mse = 0, mean_relative_difference = 0;
+};
+struct Image;
+ImageDifference image_difference(const Image &image, const Image &reference);
+
 int run_render(const RenderCommandOptions &options);
+int run_diff(const DiffCommandOptions &options);
 int run_info(const std::string &scene_path);
 
 } // namespace caustica
