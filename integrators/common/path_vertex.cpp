@@ -5,10 +5,10 @@
 
 namespace caustica {
 
-float importance_cosine(const SurfaceInteraction &si, Vec3f wo, Vec3f wi) {
-    float wo_ng = abs_dot(wo, si.n);
+float importance_cosine(Vec3f ng, Vec3f ns, Vec3f wo, Vec3f wi) {
+    float wo_ng = abs_dot(wo, ng);
     if (wo_ng == 0) return 0;
-    return abs_dot(wo, si.shading.n) * abs_dot(wi, si.n) / wo_ng;
+    return abs_dot(wo, ns) * abs_dot(wi, ng) / wo_ng;
 }
 
 bool PathVertex::connectible() const {

@@ -73,6 +73,9 @@ struct PathVertex {
 // leaving towards wi, including the adjoint shading-normal correction (Veach 1997, section 5.3):
 // the BSDF's |wi.ns| times |wo.ns| |wi.ng| / (|wo.ng| |wi.ns|), written without the |wi.ns| that
 // cancels (it may be zero).
-float importance_cosine(const SurfaceInteraction &si, Vec3f wo, Vec3f wi);
+float importance_cosine(Vec3f ng, Vec3f ns, Vec3f wo, Vec3f wi);
+inline float importance_cosine(const SurfaceInteraction &si, Vec3f wo, Vec3f wi) {
+    return importance_cosine(si.n, si.shading.n, wo, wi);
+}
 
 } // namespace caustica

@@ -1,6 +1,7 @@
 #include "materials/dielectric_bxdf.h"
 
 #include "materials/fresnel.h"
+#include "materials/radiance_scaling.h"
 
 namespace caustica {
 
@@ -91,7 +92,7 @@ std::optional<BSDFSample> DielectricBxDF::sample_specular(Vec3f wo, float uc, Tr
     int lanes = dispersive_ ? 1 : NumWavelengths;
     for (int i = 0; i < lanes; ++i) {
         float t = 1 - fresnel_dielectric(cos_o, eta_[i]);
-        if (mode == TransportMode::Radiance) t /= sqr(relative_eta(cos_o, eta_[i]));
+        t *= radiance_scaling(mode, relative_eta(cos_o, eta_[i]));
         s.f[i] = t / cos_i;
     }
     s.pdf = lobes.transmission_probability();
@@ -139,7 +140,7 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
     if (!dispersive_) {
         float t = (1 - fresnel_dielectric(wo_dot_m, eta_[0])) * distribution_.D(wm) *
                   distribution_.G(wo, s.wi) * std::abs(wi_dot_m * wo_dot_m / (cos_i * cos_o * denom));
-        if (mode == TransportMode::Radiance) t /= sqr(etap);
+        t *= radiance_scaling(mode, etap);
         s.f = SampledSpectrum(t);
     } else if (std::max(distribution_.alpha_x(), distribution_.alpha_y()) < DispersiveAlphaThreshold) {
         s.f[0] = rough_transmission(wo, s.wi, eta_[0], mode);
@@ -160,7 +161,7 @@ float DielectricBxDF::rough_transmission(Vec3f wo, Vec3f wi, float eta, Transpor
     if (denom == 0) return 0;
     float t = (1 - fresnel_dielectric(wo_dot_m, eta)) * distribution_.D(*wm) * distribution_.G(wo, wi) *
               std::abs(wi_dot_m * wo_dot_m / (cos_i * cos_o * denom));
-    if (mode == TransportMode::Radiance) t /= sqr(etap);
+    t *= radiance_scaling(mode, etap);
     return t;
 }
 

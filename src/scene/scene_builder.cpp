@@ -28,8 +28,63 @@ std::string caustica_integrator_name(const std::string &name) {
 
 namespace {
 
+// Sizes that decide allocations are checked before anything is allocated, so that an absurd
+// value is an error at its parameter instead of an out-of-memory failure or an integer
+// overflow. The limits lie far beyond what a render on one machine can use.
+constexpr int MaxFilmSide = 1 << 16;
+// The film keeps about 60 bytes per pixel (sums, weights and splats in double precision):
+// 2^27 pixels (e.g. 16384 x 8192) already take 8 GB.
+constexpr int64_t MaxFilmPixels = int64_t(1) << 27;
+constexpr int64_t MaxSamplesPerPixel = int64_t(1) << 24;
+// Bidirectional integrators allocate maxdepth + 2 path vertices per sample.
+constexpr int MaxPathDepth = 1 << 16;
+
+void check_film_size(const SceneEntity &film, const RenderOverrides &ov) {
+    const ParameterDictionary &params = film.params;
+    int64_t side[2];
+    const char *names[2] = {"xresolution", "yresolution"};
+    const int overrides[2] = {ov.width, ov.height};
+    for (int i = 0; i < 2; ++i) {
+        side[i] = overrides[i] > 0 ? overrides[i] : params.get_one_int(names[i], i == 0 ? 1280 : 720);
+        if (side[i] <= MaxFilmSide) continue;
+        std::string message = std::to_string(side[i]) + " pixels exceed the largest film side (" +
+                              std::to_string(MaxFilmSide) + ")";
+        if (overrides[i] > 0) throw InputError("--resolution: " + message);
+        throw InputError(params.location(names[i]), "\"" + std::string(names[i]) + "\": " + message);
+    }
+    if (side[0] * side[1] > MaxFilmPixels) {
+        std::string message = std::to_string(side[0]) + " x " + std::to_string(side[1]) +
+                              " pixels exceed the largest film (" + std::to_string(MaxFilmPixels) +
+                              " pixels)";
+        if (ov.width > 0 || ov.height > 0) throw InputError("--resolution: " + message);
+        throw InputError(params.location("xresolution"), message);
+    }
+}
+
+void check_sample_count(const SceneEntity &sampler, const RenderOverrides &ov) {
+    auto too_many = [](int64_t n) {
+        return std::to_string(n) + " samples per pixel exceed the limit (" +
+               std::to_string(MaxSamplesPerPixel) + ")";
+    };
+    if (ov.spp > 0) {
+        if (ov.spp > MaxSamplesPerPixel) throw InputError("--spp: " + too_many(ov.spp));
+        return;
+    }
+    const ParameterDictionary &params = sampler.params;
+    if (sampler.type == "stratified") {
+        // Each count alone fits an int; their product need not.
+        int64_t n = int64_t(params.get_one_int("xsamples", 4)) * params.get_one_int("ysamples", 4);
+        if (n > MaxSamplesPerPixel)
+            throw InputError(params.location("xsamples"), "\"xsamples\" x \"ysamples\": " + too_many(n));
+    } else if (params.has("pixelsamples")) {
+        int n = params.get_one_int("pixelsamples", 1);
+        if (n > MaxSamplesPerPixel)
+            throw InputError(params.location("pixelsamples"), "\"pixelsamples\": " + too_many(n));
+    }
+}
+
 // Integrators this build can run; the others arrive with the bidirectional work.
-const std::set<std::string> available_integrators = {"bdpt", "lt", "pt"};
+const std::set<std::string> available_integrators = {"bdpt", "bpm", "lt", "pt", "vcm"};
 
 std::string available_integrator_list() {
     std::string list;
@@ -38,6 +93,13 @@ std::string available_integrator_list() {
 }
 
 void choose_integrator(const SceneDescription &d, const RenderOverrides &ov, Scene &scene) {
+    if (d.integrator.params.has("maxdepth")) {
+        int depth = d.integrator.params.get_one_int("maxdepth", 5);
+        if (depth > MaxPathDepth)
+            throw InputError(d.integrator.params.location("maxdepth"),
+                             "\"maxdepth\" " + std::to_string(depth) + " exceeds the limit (" +
+                                 std::to_string(MaxPathDepth) + ")");
+    }
     scene.integrator_params = d.integrator.params;
     scene.integrator_location = d.integrator.loc;
     if (!ov.integrator.empty()) {
@@ -191,6 +253,8 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     choose_integrator(d, ov, *scene);
 
     if (!d.has_camera) throw InputError(SourceLocation{}, "the scene has no Camera directive");
+    check_film_size(d.film, ov);
+    check_sample_count(d.sampler, ov);
     std::unique_ptr<Filter> filter =
         create_filter(d.filter.type.empty() ? "gaussian" : d.filter.type, d.filter.params, d.filter.loc);
     scene->film = create_film(d.film.type.empty() ? "rgb" : d.film.type, d.film.params, d.color_space,

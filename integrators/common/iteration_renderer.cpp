@@ -1,0 +1,119 @@
+#include "integrators/common/iteration_renderer.h"
+
+#include "film/film.h"
+#include "scene/scene.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <climits>
+#include <vector>
+
+namespace caustica {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct Tile {
+    Vec2i lo, hi;
+};
+
+} // namespace
+
+struct IterationRenderer::ThreadState {
+    std::unique_ptr<Sampler> sampler;
+    std::unique_ptr<ScratchBuffer> sample_scratch = std::make_unique<ScratchBuffer>();
+    std::unique_ptr<ScratchBuffer> iteration_scratch = std::make_unique<ScratchBuffer>(1 << 20);
+    uint64_t rays = 0, non_finite = 0;
+};
+
+struct IterationRenderer::Threads {
+    tbb::enumerable_thread_specific<ThreadState> states;
+    std::vector<Tile> tiles;
+    explicit Threads(const Scene &scene)
+        : states([&scene] {
+              ThreadState s;
+              s.sampler = scene.sampler->clone();
+              return s;
+          }) {}
+};
+
+IterationRenderer::IterationRenderer(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                                     const ProgressCallback &progress)
+    : scene_(scene), budget_(budget), stats_(stats), progress_(progress),
+      start_(std::chrono::steady_clock::now()), threads_(std::make_unique<Threads>(scene)) {
+    const PixelBounds &bounds = scene.film->pixel_bounds();
+    pixel_count_ = size_t(bounds.width()) * bounds.height();
+    for (int y = bounds.min.y; y < bounds.max.y; y += kTileSize)
+        for (int x = bounds.min.x; x < bounds.max.x; x += kTileSize)
+            threads_->tiles.push_back(
+                {{x, y}, {std::min(x + kTileSize, bounds.max.x), std::min(y + kTileSize, bounds.max.y)}});
+}
+
+IterationRenderer::~IterationRenderer() {
+    for (ThreadState &ts : threads_->states) {
+        stats_.rays += ts.rays;
+        stats_.non_finite_samples += ts.non_finite;
+    }
+}
+
+bool IterationRenderer::cancelled() const {
+    return budget_.cancel && budget_.cancel->load(std::memory_order_relaxed);
+}
+
+double IterationRenderer::elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void IterationRenderer::run(const std::function<bool(int)> &iteration) {
+    const bool timed = budget_.seconds > 0;
+    const int cap = budget_.spp > 0 ? budget_.spp : (timed ? INT_MAX : 1);
+    int done = 0;
+    while (done < cap) {
+        // With a time limit, an iteration is only started if it is expected to finish in time
+        // (its cost estimated from the iterations so far); the first one always runs.
+        if (timed && done > 0 && elapsed() + elapsed() / done > budget_.seconds) break;
+        const bool completed = iteration(done);
+        for (ThreadState &ts : threads_->states) ts.iteration_scratch->reset();
+        if (!completed || cancelled()) {
+            stats_.interrupted = true;
+            break;
+        }
+        ++done;
+        stats_.pixel_samples += pixel_count_;
+        if (progress_)
+            progress_(timed ? std::min(1.0, elapsed() / budget_.seconds) : double(done) / cap,
+                      uint64_t(done) * pixel_count_);
+    }
+    stats_.samples_per_pixel = done;
+    stats_.seconds = elapsed();
+}
+
+bool IterationRenderer::for_each_pixel(int iteration, int dimension, const IterationPixelFunction &work) {
+    const PixelBounds &bounds = scene_.film->pixel_bounds();
+    const size_t width = size_t(bounds.width());
+    std::atomic<bool> stopped{false};
+    tbb::parallel_for(size_t(0), threads_->tiles.size(), [&](size_t t) {
+        ThreadState &ts = threads_->states.local();
+        IterationPixelContext ctx{*ts.sampler, *ts.sample_scratch, *ts.iteration_scratch, ts.rays,
+                                  ts.non_finite};
+        const Tile &tile = threads_->tiles[t];
+        for (int y = tile.lo.y; y < tile.hi.y; ++y)
+            for (int x = tile.lo.x; x < tile.hi.x; ++x) {
+                // Checked per pixel, so an interruption is honoured within one path's time.
+                if (cancelled()) {
+                    stopped = true;
+                    return;
+                }
+                Vec2i pixel{x, y};
+                ts.sampler->start_pixel_sample(pixel, iteration, dimension);
+                work(pixel, size_t(y - bounds.min.y) * width + size_t(x - bounds.min.x), ctx);
+                ts.sample_scratch->reset();
+            }
+    });
+    return !stopped;
+}
+
+} // namespace caustica

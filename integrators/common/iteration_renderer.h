@@ -1,0 +1,69 @@
+// The iteration loop of the photon-mapping integrators (sppm, bpm, vcm). Unlike camera-only
+// rendering, an iteration is a sequence of passes over all pixels that depend on each other
+// (trace every light path, build the photon index, then trace every camera path), so the budget
+// is counted in whole iterations: `--spp N` means N iterations, as in SmallVCM and pbrt-v4.
+//
+// A pass visits the film's pixels in tiles over oneTBB. Every pixel's random numbers depend only
+// on (pixel, iteration, first sampler dimension, seed), so results do not depend on threads.
+#pragma once
+
+#include "core/scratch_buffer.h"
+#include "integrators/integrator.h"
+#include "sampler/sampler.h"
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+namespace caustica {
+
+class Scene;
+
+// What a pass's work for one pixel may use. sample_scratch is reset after every pixel;
+// iteration_scratch lives until the iteration ends (for objects the next pass still reads,
+// such as the BSDFs of stored light vertices).
+struct IterationPixelContext {
+    Sampler &sampler;
+    ScratchBuffer &sample_scratch;
+    ScratchBuffer &iteration_scratch;
+    uint64_t &rays;
+    uint64_t &non_finite;
+};
+
+// pixel_index numbers the film's pixel bounds row by row from 0.
+using IterationPixelFunction = std::function<void(Vec2i pixel, size_t pixel_index, IterationPixelContext &ctx)>;
+
+class IterationRenderer {
+  public:
+    IterationRenderer(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                      const ProgressCallback &progress);
+    ~IterationRenderer();
+
+    // Calls iteration(i) for i = 0, 1, ... until the budget's iteration count or time is used
+    // up or the render is cancelled; iteration() returns false when it was cancelled part-way.
+    // Fills in stats.samples_per_pixel (completed iterations), seconds and interrupted.
+    void run(const std::function<bool(int iteration)> &iteration);
+
+    // One parallel pass: work(pixel, index, ctx) for every pixel of the film's bounds, with the
+    // thread's sampler started at (pixel, iteration, dimension). Returns false if cancelled.
+    bool for_each_pixel(int iteration, int dimension, const IterationPixelFunction &work);
+
+    size_t pixel_count() const { return pixel_count_; }
+
+  private:
+    struct ThreadState;
+    bool cancelled() const;
+    double elapsed() const;
+
+    const Scene &scene_;
+    const RenderBudget &budget_;
+    RenderStats &stats_;
+    const ProgressCallback &progress_;
+    size_t pixel_count_;
+    std::chrono::steady_clock::time_point start_;
+    struct Threads;
+    std::unique_ptr<Threads> threads_;
+};
+
+} // namespace caustica

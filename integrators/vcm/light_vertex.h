@@ -1,0 +1,42 @@
+// What a light subpath leaves behind for the camera pass of an iteration (SmallVCM's light
+// vertex, split in two by use):
+//
+// - LightVertex: a full scattering vertex, with its BSDF, for vertex connection (a camera vertex
+//   is joined to every vertex of the light path traced for its pixel). Few are read per camera
+//   path, so they can be large.
+// - Photon: the compact record gathered by vertex merging, read in bulk by range queries, so it
+//   is kept small: 32 bytes, plus the 12-byte position the range search indexes (44 in all).
+//
+// Both carry the recursive MIS quantities of Georgiev et al. 2012 ("Implementing vertex
+// connection and merging", tech. report, section 5) at their vertex: see vcm_mis.h.
+#pragma once
+
+#include "core/octahedral.h"
+#include "materials/bsdf.h"
+#include "spectral/sampled_spectrum.h"
+
+#include <cstdint>
+
+namespace caustica {
+
+struct LightVertex {
+    Vec3f p, ng;           // position, geometric normal
+    Vec3f shading_n;       // shading normal (for the adjoint shading-normal correction)
+    Vec3f wo;              // towards the previous vertex of the light path
+    BSDF bsdf;             // lives in the iteration's scratch memory
+    SampledSpectrum beta;  // light subpath throughput, emitted flux included
+    float d_vcm, d_vc, d_vm;
+    uint16_t path_length;  // segments from the light to this vertex
+    bool secondary_terminated;
+};
+
+struct Photon {
+    SampledSpectrum beta;  // as LightVertex::beta
+    float d_vcm, d_vm;
+    uint32_t wo;           // octahedral-encoded direction towards the previous vertex
+    uint16_t path_length;
+    uint16_t secondary_terminated;
+};
+static_assert(sizeof(Photon) == 32, "photons are kept compact: see the comment above");
+
+} // namespace caustica

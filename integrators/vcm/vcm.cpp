@@ -1,0 +1,576 @@
+#include "integrators/vcm/vcm.h"
+
+#include "camera/camera.h"
+#include "core/error.h"
+#include "integrators/common/iteration_renderer.h"
+#include "integrators/common/path_vertex.h"
+#include "integrators/vcm/light_vertex.h"
+#include "integrators/vcm/vcm_mis.h"
+#include "integrators/vcm/wavelength_groups.h"
+#include "scene/scene.h"
+#include "spatial/range_search.h"
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace caustica {
+
+VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
+    : mode_(mode), max_depth_(params.get_one_int("maxdepth", 5)),
+      base_radius_(params.get_one_float("radius", 0)), alpha_(params.get_one_float("alpha", 0.75f)),
+      wavelength_groups_(params.get_one_int("wavelengthgroups", 4)),
+      photon_search_(params.get_one_string("photonsearch", "hashgrid")) {
+    const char *name = mode == Mode::VertexConnectionMerging ? "vcm" : "bpm";
+    if (max_depth_ < 0)
+        throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
+    if (base_radius_ < 0 || !std::isfinite(base_radius_))
+        throw InputError(params.location("radius"), "\"radius\" must be a positive distance (or 0 for the default)");
+    if (!(alpha_ > 0 && alpha_ <= 1))
+        throw InputError(params.location("alpha"), "\"alpha\" must lie in (0, 1]");
+    if (wavelength_groups_ < 1 || wavelength_groups_ > 64)
+        throw InputError(params.location("wavelengthgroups"), "\"wavelengthgroups\" must lie in [1, 64]");
+    if (photon_search_ != "hashgrid" && photon_search_ != "flann")
+        throw InputError(params.location("photonsearch"), "\"photonsearch\" must be \"hashgrid\" or \"flann\"");
+    if (!scene.camera->models_importance())
+        throw InputError(scene.integrator_location,
+                         std::string(name) + " needs a camera whose importance is modelled (perspective); "
+                                             "this scene's camera has none");
+    if (base_radius_ == 0) {
+        Vec3f center;
+        float scene_radius = 0;
+        scene.geometry.bounds().bounding_sphere(&center, &scene_radius);
+        base_radius_ = 0.003f * scene_radius;
+    }
+    params.report_unused();
+}
+
+namespace {
+
+// Light subpaths draw their random numbers from sampler dimensions far above those any camera
+// subpath of the same pixel and iteration reaches, so the two are independent.
+constexpr int kLightPathDimension = 1 << 12;
+
+// What every pass of one iteration shares.
+struct Iteration {
+    const Scene &scene;
+    int max_depth;
+    bool use_vc, use_vm;
+    float radius;
+    const WavelengthGroups &groups;
+    std::vector<VcmWeights> weights;       // per wavelength group
+    std::vector<float> vm_normalization;   // per group: 1 / (pi r^2 N_group)
+    // Light tracing: N light paths against one camera sample per pixel of the full frame.
+    float light_paths, full_frame_pixels;
+};
+
+// A light subpath's vertices, in the storage of the thread that traced it.
+struct StoredPath {
+    const std::vector<LightVertex> *vertices = nullptr;
+    uint32_t begin = 0, count = 0;
+};
+
+// Contributions made with a terminated wavelength set (a dispersive refraction on either
+// subpath) are valid for the hero alone. The camera sample adds everything in the measure of
+// its group's full set, so such a contribution keeps its hero value, rescaled by the ratio of the
+// two sets' hero densities, and loses the other lanes.
+SampledSpectrum in_group_measure(SampledSpectrum L, bool terminated, float hero_scale) {
+    if (!terminated) return L;
+    SampledSpectrum hero(0.f);
+    hero[0] = L[0] * hero_scale;
+    return hero;
+}
+
+void drop_secondary(SampledSpectrum &s) {
+    for (int i = 1; i < NumWavelengths; ++i) s[i] = 0;
+}
+
+bool is_at_infinity(const Light &light) {
+    return light.type() == LightType::Infinite || light.type() == LightType::DeltaDirection;
+}
+
+// Emission densities of a light towards a direction, with the delta parts of delta lights set to
+// one (pdf_le gives them as zero: a given ray cannot hit them, but a connection can).
+struct EmissionDensities {
+    float pdf_pos = 0, pdf_dir = 0;
+};
+
+EmissionDensities emission_densities(const Light &light, Vec3f p, Vec3f n, Vec3f w) {
+    EmissionDensities e;
+    light.pdf_le(Ray{p, w, Infinity}, n, &e.pdf_pos, &e.pdf_dir);
+    if (light.type() == LightType::DeltaPosition) e.pdf_pos = 1;
+    if (light.type() == LightType::DeltaDirection) e.pdf_dir = 1;
+    return e;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Light subpaths
+
+struct LightPathContext {
+    const Iteration &it;
+    IterationPixelContext &pixel;
+    const VcmWeights &w;
+};
+
+// Connects a light vertex to a sampled lens point (light tracing, the t = 1 strategy) and
+// splats the weighted contribution where it lands on the film.
+void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const SubpathMis &m,
+                       const SampledWavelengths &lambda) {
+    const Scene &scene = ctx.it.scene;
+    auto cs = scene.camera->sample_wi(v.p, ctx.pixel.sampler.get_2d(), lambda);
+    if (!cs || !(cs->pdf > 0)) return;
+    SampledSpectrum f = v.bsdf.f(v.wo, cs->wi, TransportMode::Importance) *
+                        importance_cosine(v.ng, v.shading_n, v.wo, cs->wi);
+    if (f.is_black()) return;
+
+    // The camera would generate this vertex with its directional density (the same lens point
+    // is sampled by both strategies, so the lens density cancels), per pixel of the full frame,
+    // converted to the area measure here.
+    float pdf_lens, pdf_dir;
+    scene.camera->pdf_we(Ray{cs->p_lens, -cs->wi, Infinity}, &pdf_lens, &pdf_dir);
+    const float dist2 = length_squared(cs->p_lens - v.p);
+    const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * abs_dot(v.ng, cs->wi) / dist2;
+    const float bsdf_rev_pdf = v.bsdf.pdf(cs->wi, v.wo, TransportMode::Radiance);
+    const float w_light = mis(camera_pdf_a / ctx.it.light_paths) *
+                          (ctx.w.vm_weight + m.d_vcm + m.d_vc * mis(bsdf_rev_pdf));
+    SampledSpectrum L = v.beta * f * cs->We * (1 / (cs->pdf * (1 + w_light)));
+    if (L.is_black()) return;
+    if (L.has_non_finite()) {
+        ++ctx.pixel.non_finite;
+        return;
+    }
+    ++ctx.pixel.rays;
+    if (scene.occluded(spawn_ray_to(v.p, v.ng, cs->p_lens, Vec3f{}))) return;
+    scene.film->add_splat(cs->p_raster, L, lambda);
+}
+
+// Traces the light subpath of one pixel with its group's wavelengths, appending its
+// non-specular vertices to `store` and splatting their connections to the lens.
+void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, std::vector<LightVertex> &store) {
+    const Iteration &it = ctx.it;
+    const Scene &scene = it.scene;
+    Sampler &sampler = ctx.pixel.sampler;
+    auto chosen = scene.light_sampler->sample(sampler.get_1d());
+    Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
+    if (!chosen) return;
+    const Light &light = *chosen->light;
+    auto les = light.sample_le(u_position, u_direction, lambda);
+    if (!les || les->L.is_black() || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return;
+
+    // Initial MIS quantities (tech. report eqs. 31-33): the emission density of the light
+    // sample against the density with which next-event estimation would pick the same point
+    // (taken, as in SmallVCM and pbrt-v4's BDPT, as the light's position density; for lights
+    // at infinity, the direction density).
+    const bool at_infinity = is_at_infinity(light);
+    const float cos_light = les->n == Vec3f{} ? 1.f : abs_dot(les->n, normalize(les->ray.d));
+    const float emission_pdf = chosen->pmf * les->pdf_pos * les->pdf_dir;
+    const float direct_pdf = chosen->pmf * (at_infinity ? les->pdf_dir : les->pdf_pos);
+    SubpathMis m;
+    m.d_vcm = mis(direct_pdf / emission_pdf);
+    // A camera path can only hit lights that are not deltas.
+    m.d_vc = is_delta_light(light.type()) ? 0.f : mis((at_infinity ? 1.f : cos_light) / emission_pdf);
+    m.d_vm = m.d_vc * ctx.w.light_hit_weight;
+
+    // The emitted flux is kept apart from the scattering throughput so that Russian roulette
+    // sees the throughput on the path tracer's scale.
+    const SampledSpectrum flux = les->L * (cos_light / emission_pdf);
+    SampledSpectrum beta(1.f);
+    Ray ray = les->ray;
+    Vec3f segment_start = ray.o;
+    const Material *absorbing_interior = nullptr;
+    int path_length = 0;
+    while (true) {
+        SurfaceInteraction si;
+        ++ctx.pixel.rays;
+        bool hit = scene.intersect(ray, &si);
+        if (absorbing_interior) {
+            if (!hit) break;
+            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * (si.t * length(ray.d)));
+            if (beta.is_black()) break;
+        }
+        if (!hit) break;
+        BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.pixel.iteration_scratch) : BSDF();
+        if (!bsdf) {
+            // A boundary between media only: the segment continues through it.
+            ray = si.spawn_ray(ray.d);
+            continue;
+        }
+        ++path_length;
+        m.arrive(path_length > 1 || !at_infinity ? length_squared(si.p - segment_start) : 1.f,
+                 abs_dot(si.n, si.wo));
+
+        if (is_non_specular(bsdf.flags())) {
+            LightVertex v{si.p, si.n, si.shading.n, si.wo, bsdf, flux * beta, m.d_vcm, m.d_vc, m.d_vm,
+                          uint16_t(path_length), lambda.secondary_terminated()};
+            store.push_back(v);
+            if (it.use_vc) connect_to_camera(ctx, v, m, lambda);
+        }
+        // A vertex further along could not be part of a path within max_depth.
+        if (path_length >= it.max_depth) break;
+
+        float u = sampler.get_1d();
+        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
+        if (!bs) break;
+        if (bs->dispersive && !lambda.secondary_terminated()) {
+            lambda.terminate_secondary();
+            drop_secondary(beta);
+        }
+        const float pdf_dir = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, TransportMode::Importance) : bs->pdf;
+        const float pdf_rev = bsdf.pdf(bs->wi, si.wo, TransportMode::Radiance);
+        m.scatter(ctx.w, abs_dot(si.n, bs->wi), pdf_dir, pdf_rev, bs->is_specular());
+        beta *= bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
+        if (bs->is_transmission() && si.material->has_interior_absorption())
+            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        ray = si.spawn_ray(bs->wi);
+        segment_start = si.p;
+
+        // Russian roulette changes the throughput, not the densities: the MIS weights are
+        // unaffected and remain a partition of unity.
+        if (beta.max_value() < 1 && path_length > 1) {
+            float q = std::max(0.f, 1 - beta.max_value());
+            if (sampler.get_1d() < q) break;
+            beta /= 1 - q;
+        }
+        if (beta.is_black()) break;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Camera subpaths
+
+struct CameraVertex {
+    const SurfaceInteraction &si;
+    const BSDF &bsdf;
+    const SubpathMis &m;
+    int path_length;
+};
+
+struct CameraPathContext {
+    const Iteration &it;
+    IterationPixelContext &pixel;
+    int group;
+    const VcmWeights &w;
+    const SampledWavelengths &lambda;    // the camera subpath's (possibly terminated) set
+    float hero_scale;                    // see in_group_measure
+};
+
+// Next-event estimation at a camera vertex: a light sampled and connected (the s = 1
+// strategy), weighted against the camera path hitting it and against the light subpaths that
+// could have produced the vertex (tech. report eq. 44).
+SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z) {
+    const Scene &scene = ctx.it.scene;
+    Sampler &sampler = ctx.pixel.sampler;
+    auto chosen = scene.light_sampler->sample(sampler.get_1d());
+    Vec2f u = sampler.get_2d();
+    if (!chosen) return {};
+    const Light &light = *chosen->light;
+    auto ls = light.sample_li(LightSampleContext{z.si.p, z.si.n, z.si.shading.n}, u, ctx.lambda);
+    if (!ls || ls->L.is_black() || !(ls->pdf > 0)) return {};
+    SampledSpectrum f = z.bsdf.f(z.si.wo, ls->wi, TransportMode::Radiance) * abs_dot(ls->wi, z.si.shading.n);
+    if (f.is_black()) return {};
+
+    const bool at_infinity = ls->is_infinite || light.type() == LightType::DeltaDirection;
+    const float dist2 = at_infinity ? 1.f : length_squared(ls->p_light - z.si.p);
+    const float cos_at_light = ls->n_light == Vec3f{} ? 1.f : abs_dot(ls->n_light, ls->wi);
+    if (cos_at_light == 0) return {};
+    EmissionDensities e = emission_densities(light, ls->p_light, ls->n_light, -ls->wi);
+    // The next-event density that the other strategies' weights assume (see trace_light_path),
+    // as a solid angle at z.
+    float assumed_direct_pdf = chosen->pmf;
+    if (light.type() == LightType::Area) assumed_direct_pdf *= e.pdf_pos * dist2 / cos_at_light;
+    else if (light.type() == LightType::DeltaPosition) assumed_direct_pdf *= dist2;
+    else if (light.type() == LightType::Infinite) assumed_direct_pdf *= e.pdf_dir;
+    const float emission_pdf = chosen->pmf * e.pdf_pos * e.pdf_dir;
+    const float bsdf_dir_pdf = z.bsdf.pdf(z.si.wo, ls->wi, TransportMode::Radiance);
+    const float bsdf_rev_pdf = z.bsdf.pdf(ls->wi, z.si.wo, TransportMode::Importance);
+    const float w_light = is_delta_light(light.type()) ? 0.f : mis(bsdf_dir_pdf / assumed_direct_pdf);
+    const float w_camera = mis(emission_pdf * abs_dot(z.si.n, ls->wi) / (assumed_direct_pdf * cos_at_light)) *
+                           (ctx.w.vm_weight + z.m.d_vcm + z.m.d_vc * mis(bsdf_rev_pdf));
+    SampledSpectrum L = f * ls->L * (1 / (chosen->pmf * ls->pdf * (w_light + 1 + w_camera)));
+    if (L.is_black()) return {};
+    ++ctx.pixel.rays;
+    Ray shadow = ls->is_infinite ? z.si.spawn_ray(ls->wi) : z.si.spawn_ray_to(ls->p_light, ls->n_light);
+    if (scene.occluded(shadow)) return {};
+    return in_group_measure(L, ctx.lambda.secondary_terminated(), ctx.hero_scale);
+}
+
+// Joins a camera vertex to one light vertex with a shadow ray (tech. report eqs. 40-41).
+SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, const LightVertex &v) {
+    Vec3f d = v.p - z.si.p;
+    const float dist2 = length_squared(d);
+    if (dist2 == 0) return {};
+    d = d / std::sqrt(dist2);
+    SampledSpectrum f_camera = z.bsdf.f(z.si.wo, d, TransportMode::Radiance) * abs_dot(d, z.si.shading.n);
+    if (f_camera.is_black()) return {};
+    SampledSpectrum f_light = v.bsdf.f(v.wo, -d, TransportMode::Importance) *
+                              importance_cosine(v.ng, v.shading_n, v.wo, -d);
+    if (f_light.is_black()) return {};
+
+    const float camera_dir_pdf = z.bsdf.pdf(z.si.wo, d, TransportMode::Radiance);
+    const float camera_rev_pdf = z.bsdf.pdf(d, z.si.wo, TransportMode::Importance);
+    const float light_dir_pdf = v.bsdf.pdf(v.wo, -d, TransportMode::Importance);
+    const float light_rev_pdf = v.bsdf.pdf(-d, v.wo, TransportMode::Radiance);
+    const float camera_dir_pdf_a = camera_dir_pdf * abs_dot(v.ng, d) / dist2;
+    const float light_dir_pdf_a = light_dir_pdf * abs_dot(z.si.n, d) / dist2;
+    const float w_light = mis(camera_dir_pdf_a) * (ctx.w.vm_weight + v.d_vcm + v.d_vc * mis(light_rev_pdf));
+    const float w_camera = mis(light_dir_pdf_a) * (ctx.w.vm_weight + z.m.d_vcm + z.m.d_vc * mis(camera_rev_pdf));
+    SampledSpectrum L = f_camera * f_light * v.beta * (1 / (dist2 * (w_light + 1 + w_camera)));
+    if (L.is_black()) return {};
+    ++ctx.pixel.rays;
+    if (ctx.it.scene.occluded(spawn_ray_to(z.si.p, z.si.n, v.p, v.ng))) return {};
+    return in_group_measure(L, ctx.lambda.secondary_terminated() || v.secondary_terminated, ctx.hero_scale);
+}
+
+// Gathers the photons of the camera vertex's wavelength group within the merge radius (tech.
+// report eqs. 42-43), normalised by pi r^2 times the group's light-path count.
+SampledSpectrum merge(const CameraPathContext &ctx, const CameraVertex &z, const RangeSearch &search,
+                      const std::vector<Photon> &photons, std::vector<uint32_t> &found) {
+    search.find_within(z.si.p, ctx.it.radius, found);
+    SampledSpectrum sum(0.f);
+    for (uint32_t index : found) {
+        const Photon &photon = photons[index];
+        // The merged vertex belongs to both subpaths.
+        if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) continue;
+        const Vec3f wi = decode_octahedral(photon.wo);
+        const float cos_ng = abs_dot(wi, z.si.n);
+        if (cos_ng == 0) continue;
+        SampledSpectrum f = z.bsdf.f(z.si.wo, wi, TransportMode::Radiance);
+        if (f.is_black()) continue;
+        const float camera_dir_pdf = z.bsdf.pdf(z.si.wo, wi, TransportMode::Radiance);
+        const float camera_rev_pdf = z.bsdf.pdf(wi, z.si.wo, TransportMode::Importance);
+        const float w_light = photon.d_vcm * ctx.w.vc_weight + photon.d_vm * mis(camera_dir_pdf);
+        const float w_camera = z.m.d_vcm * ctx.w.vc_weight + z.m.d_vm * mis(camera_rev_pdf);
+        // Photon density is flux per unit of geometric area; the shading-normal BSDF turns it
+        // into radiance with |wi.ns| / |wi.ng| (the adjoint correction, Veach 1997, 5.3).
+        const float shading = abs_dot(wi, z.si.shading.n) / cos_ng;
+        sum += in_group_measure(f * photon.beta * (shading / (w_light + 1 + w_camera)),
+                                ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
+                                ctx.hero_scale);
+    }
+    return sum * ctx.it.vm_normalization[ctx.group];
+}
+
+// Radiance of the camera subpath of one pixel (tech. report section 5), in the measure of its
+// group's full wavelength set.
+SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pixel, int group,
+                                  const CameraRay &camera_ray, SampledWavelengths &lambda,
+                                  const StoredPath &light_path, const RangeSearch *search,
+                                  const std::vector<Photon> &photons, std::vector<uint32_t> &found) {
+    const Scene &scene = it.scene;
+    Sampler &sampler = pixel.sampler;
+    const VcmWeights &w = it.weights[group];
+    SampledWavelengths terminated = lambda;
+    terminated.terminate_secondary();
+    const CameraPathContext ctx{it, pixel, group, w, lambda, lambda.pdf()[0] / terminated.pdf()[0]};
+
+    // The camera generates the first vertex with its directional density, one sample per pixel
+    // of the full frame; light tracing reaches it with N light paths (eq. 31 for the camera).
+    float pdf_lens, pdf_dir;
+    scene.camera->pdf_we(camera_ray.ray, &pdf_lens, &pdf_dir);
+    SubpathMis m;
+    m.d_vcm = mis(it.light_paths / (pdf_dir * it.full_frame_pixels));
+
+    SampledSpectrum L(0.f), beta = camera_ray.weight;
+    float eta_scale = 1;
+    Ray ray = camera_ray.ray;
+    Vec3f segment_start = ray.o;
+    LightSampleContext previous{ray.o, Vec3f{}, Vec3f{}};
+    const Material *absorbing_interior = nullptr;
+    int path_length = 0;
+    auto add = [&](const SampledSpectrum &contribution) {
+        L += beta * in_group_measure(contribution, lambda.secondary_terminated(), ctx.hero_scale);
+    };
+    while (true) {
+        SurfaceInteraction si;
+        ++pixel.rays;
+        bool hit = scene.intersect(ray, &si);
+        if (absorbing_interior) {
+            if (!hit) break;
+            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * (si.t * length(ray.d)));
+            if (beta.is_black()) break;
+        }
+        if (!hit) {
+            // Environment light: the camera path's own strategy, against next-event estimation
+            // of the same direction and the light subpaths that start from it.
+            for (const Light *light : scene.infinite_lights) {
+                SampledSpectrum Le = light->Le(ray, lambda);
+                if (Le.is_black()) continue;
+                if (path_length == 0) {
+                    add(Le);
+                    continue;
+                }
+                const Vec3f wi = normalize(ray.d);
+                const float pmf = scene.light_sampler->pmf(light);
+                EmissionDensities e = emission_densities(*light, segment_start, Vec3f{}, -wi);
+                const float direct_pdf = pmf * light->pdf_li(previous, wi);
+                const float w_camera = w.vc_enabled * mis(direct_pdf) * m.d_vcm + mis(pmf * e.pdf_pos * e.pdf_dir) * m.d_vc;
+                add(Le / (1 + w_camera));
+            }
+            break;
+        }
+        BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, pixel.sample_scratch) : BSDF();
+        if (!bsdf && !si.area_light) {
+            ray = si.spawn_ray(ray.d);
+            continue;
+        }
+        ++path_length;
+        m.arrive(length_squared(si.p - segment_start), abs_dot(si.n, si.wo));
+
+        if (si.area_light) {
+            SampledSpectrum Le = si.area_light->L(si.p, si.n, si.uv, si.wo, lambda);
+            if (!Le.is_black()) {
+                if (path_length == 1) {
+                    add(Le);
+                } else {
+                    const float pmf = scene.light_sampler->pmf(si.area_light);
+                    EmissionDensities e = emission_densities(*si.area_light, si.p, si.n, si.wo);
+                    const float w_camera = w.vc_enabled * mis(pmf * e.pdf_pos) * m.d_vcm +
+                                           mis(pmf * e.pdf_pos * e.pdf_dir) * m.d_vc;
+                    add(Le / (1 + w_camera));
+                }
+            }
+        }
+        if (!bsdf || path_length > it.max_depth) break;
+
+        if (is_non_specular(bsdf.flags())) {
+            const CameraVertex z{si, bsdf, m, path_length};
+            if (it.use_vc) {
+                L += beta * sample_light(ctx, z);
+                for (uint32_t i = 0; i < light_path.count; ++i) {
+                    const LightVertex &v = (*light_path.vertices)[light_path.begin + i];
+                    if (v.path_length + path_length > it.max_depth) break;
+                    L += beta * connect(ctx, z, v);
+                }
+            }
+            if (it.use_vm && search) L += beta * merge(ctx, z, *search, photons, found);
+        }
+        if (path_length >= it.max_depth) break;
+
+        float u = sampler.get_1d();
+        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
+        if (!bs) break;
+        if (bs->dispersive && !lambda.secondary_terminated()) {
+            lambda.terminate_secondary();
+            drop_secondary(beta);
+        }
+        const float pdf_dir_bsdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
+        const float pdf_rev_bsdf = bsdf.pdf(bs->wi, si.wo, TransportMode::Importance);
+        m.scatter(w, abs_dot(si.n, bs->wi), pdf_dir_bsdf, pdf_rev_bsdf, bs->is_specular());
+        beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
+        if (bs->is_transmission()) {
+            eta_scale *= sqr(bs->eta);
+            if (si.material->has_interior_absorption())
+                absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        }
+        previous = LightSampleContext{si.p, si.n, si.shading.n};
+        ray = si.spawn_ray(bs->wi);
+        segment_start = si.p;
+
+        // Russian roulette on beta * eta^2, as in the path tracer (pbrt-v4 14.1).
+        SampledSpectrum rr_beta = beta * eta_scale;
+        if (rr_beta.max_value() < 1 && path_length > 1) {
+            float q = std::max(0.f, 1 - rr_beta.max_value());
+            if (sampler.get_1d() < q) break;
+            beta /= 1 - q;
+        }
+        if (beta.is_black()) break;
+    }
+    return L;
+}
+
+} // namespace
+
+void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                 const ProgressCallback &progress) {
+    IterationRenderer renderer(scene, budget, stats, progress);
+    const size_t pixel_count = renderer.pixel_count();
+    const Vec2i full = scene.film->resolution();
+    const bool use_vc = mode_ == Mode::VertexConnectionMerging;
+    WavelengthGroups groups(wavelength_groups_, scene.overrides.seed);
+
+    std::vector<std::unique_ptr<RangeSearch>> searches;
+    for (int g = 0; g < wavelength_groups_; ++g) searches.push_back(create_range_search(photon_search_));
+    std::vector<std::vector<Vec3f>> photon_positions(wavelength_groups_);
+    std::vector<std::vector<Photon>> photons(wavelength_groups_);
+    tbb::enumerable_thread_specific<std::vector<LightVertex>> light_vertices;
+    tbb::enumerable_thread_specific<std::vector<uint32_t>> found;
+    std::vector<StoredPath> light_paths(pixel_count);
+    light_paths_traced_ = 0;
+    std::atomic<uint64_t> traced{0};
+
+    renderer.run([&](int iteration) {
+        groups.start_iteration(scene, iteration, pixel_count);
+        const float radius = base_radius_ * std::pow(float(iteration + 1), (alpha_ - 1) / 2);
+        Iteration it{scene, max_depth_, use_vc, true, radius, groups, {}, {},
+                     float(pixel_count), float(full.x) * float(full.y)};
+        for (int g = 0; g < groups.count(); ++g) {
+            const float eta_vcm = Pi * radius * radius * float(std::max<size_t>(groups.light_path_count(g), 1));
+            it.weights.push_back(VcmWeights::make(use_vc, true, eta_vcm));
+            it.vm_normalization.push_back(1 / eta_vcm);
+        }
+
+        // Pass 1: one light subpath per pixel, stored and connected to the lens.
+        for (auto &store : light_vertices) store.clear();
+        bool completed = renderer.for_each_pixel(iteration, kLightPathDimension,
+                                                 [&](Vec2i, size_t index, IterationPixelContext &pixel) {
+            const int g = groups.group_of(index);
+            std::vector<LightVertex> &store = light_vertices.local();
+            const size_t begin = store.size();
+            trace_light_path(LightPathContext{it, pixel, it.weights[g]}, groups.wavelengths(g), store);
+            light_paths[index] = StoredPath{&store, uint32_t(begin), uint32_t(store.size() - begin)};
+            ++traced;
+        });
+        light_paths_traced_ = traced;
+        if (!completed) return false;
+
+        // The photons of each wavelength group, in pixel order so that results do not depend on
+        // which thread traced which path.
+        for (int g = 0; g < groups.count(); ++g) {
+            photon_positions[g].clear();
+            photons[g].clear();
+        }
+        for (size_t index = 0; index < pixel_count; ++index) {
+            const StoredPath &path = light_paths[index];
+            const int g = groups.group_of(index);
+            for (uint32_t i = 0; i < path.count; ++i) {
+                const LightVertex &v = (*path.vertices)[path.begin + i];
+                photon_positions[g].push_back(v.p);
+                photons[g].push_back(Photon{v.beta, v.d_vcm, v.d_vm, encode_octahedral(v.wo), v.path_length,
+                                            uint16_t(v.secondary_terminated)});
+            }
+        }
+        for (int g = 0; g < groups.count(); ++g) searches[g]->build(photon_positions[g], radius);
+
+        // Pass 2: one camera subpath per pixel.
+        Film &film = *scene.film;
+        return renderer.for_each_pixel(iteration, 0, [&](Vec2i pixel, size_t index, IterationPixelContext &ctx) {
+            const int g = groups.group_of(index);
+            SampledWavelengths lambda = groups.wavelengths(g);
+            const SampledWavelengths group_lambda = lambda;
+            ctx.sampler.get_1d(); // dimension 0 is the hero wavelength, fixed by the group here
+            CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
+            SampledSpectrum L(0.f);
+            if (auto camera_ray = scene.camera->generate_ray(cs, lambda)) {
+                L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_paths[index], searches[g].get(),
+                                      photons[g], found.local());
+                if (L.has_non_finite()) {
+                    ++ctx.non_finite;
+                    L = SampledSpectrum(0.f);
+                }
+            }
+            film.add_sample(pixel, L, group_lambda, cs.filter_weight);
+        });
+    });
+}
+
+// Light tracing's normalisation (see LightTracer::splat_scale): one light path per pixel per
+// iteration, counted as traced so that an interrupted iteration stays correctly normalised.
+double VCM::splat_scale(const Scene &scene, const RenderStats &stats) const {
+    (void)stats;
+    if (light_paths_traced_ == 0) return 0;
+    const Vec2i full = scene.film->resolution();
+    return double(full.x) * full.y / double(light_paths_traced_);
+}
+
+} // namespace caustica

@@ -1,0 +1,51 @@
+// Vertex connection and merging (Georgiev, Krivanek, Davidovic and Slusallek 2012; the same
+// combination is Hachisuka, Pantaleoni and Jensen 2012's unified path sampling), and its
+// merging-only special case, bidirectional photon mapping (bpm).
+//
+// Each iteration traces one light subpath per pixel and stores its non-specular vertices; then
+// one camera subpath per pixel is traced, and at each of its non-specular vertices it
+//   - samples a light (next-event estimation, a connection),
+//   - connects to every stored vertex of the light subpath traced for its pixel,
+//   - merges with the stored light vertices (photons) within radius r of it,
+// while light subpath vertices are also connected to the lens and splatted (light tracing).
+// All strategies are weighted by the power heuristic through the recursive quantities of
+// vcm_mis.h. The merge radius shrinks as r_i = r_0 i^((alpha - 1) / 2) over iterations i, so
+// that the merging bias vanishes while its variance stays bounded (Knaus and Zwicker 2011).
+// bpm keeps only the merges and the camera paths' own light hits.
+//
+// Spectral: pixels are split into wavelength groups per iteration (wavelength_groups.h); light
+// and camera subpaths that are connected or merged always share the group's wavelengths. A
+// dispersive refraction on either subpath keeps the hero wavelength only for what it joins.
+#pragma once
+
+#include "integrators/integrator.h"
+#include "params/parameters.h"
+
+#include <string>
+
+namespace caustica {
+
+class VCM final : public Integrator {
+  public:
+    enum class Mode { VertexConnectionMerging, BidirectionalPhotonMapping };
+
+    // Parameters: "maxdepth" (5), the most scattering events of a path; "radius" (0: 0.003 of
+    // the scene's bounding-sphere radius), the initial merge radius r_0 in scene units;
+    // "alpha" (0.75), the radius reduction exponent; "wavelengthgroups" (4), the wavelength
+    // groups per iteration; "photonsearch" ("hashgrid" or "flann"), the range search.
+    VCM(Mode mode, const ParameterDictionary &params, const Scene &scene);
+    void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                const ProgressCallback &progress) override;
+    double splat_scale(const Scene &scene, const RenderStats &stats) const override;
+
+  private:
+    Mode mode_;
+    int max_depth_;
+    float base_radius_;
+    float alpha_;
+    int wavelength_groups_;
+    std::string photon_search_;
+    uint64_t light_paths_traced_ = 0;
+};
+
+} // namespace caustica

@@ -1,0 +1,24 @@
+#include "integrators/vcm/wavelength_groups.h"
+
+#include "core/rng.h"
+#include "integrators/common/tile_renderer.h"
+
+namespace caustica {
+
+void WavelengthGroups::start_iteration(const Scene &scene, int iteration, size_t pixel_count) {
+    Rng rng(hash_values(seed_, iteration, 0x77a7e1e9), seed_);
+    const float offset = rng.uniform();
+    wavelengths_.clear();
+    for (int g = 0; g < count_; ++g)
+        wavelengths_.push_back(sample_wavelengths(scene, std::min((g + offset) / count_, OneMinusEpsilon)));
+
+    group_of_pixel_.resize(pixel_count);
+    light_paths_.assign(count_, 0);
+    for (size_t i = 0; i < pixel_count; ++i) {
+        int g = int(hash_values(seed_, iteration, i) % uint64_t(count_));
+        group_of_pixel_[i] = uint8_t(g);
+        ++light_paths_[g];
+    }
+}
+
+} // namespace caustica
