@@ -3,6 +3,7 @@
 #include "integrators/integrator.h"
 #include "integrators/lt/light_tracer.h"
 #include "integrators/pt/path_tracer.h"
+#include "integrators/sppm/sppm.h"
 #include "integrators/vcm/vcm.h"
 #include "scene/scene.h"
 
@@ -13,6 +14,7 @@ std::unique_ptr<Integrator> create_integrator(const Scene &scene) {
     if (scene.integrator_name == "lt")
         return std::make_unique<LightTracer>(scene.integrator_params, scene);
     if (scene.integrator_name == "bdpt") return std::make_unique<BDPT>(scene.integrator_params, scene);
+    if (scene.integrator_name == "sppm") return std::make_unique<SPPM>(scene.integrator_params, scene);
     if (scene.integrator_name == "vcm")
         return std::make_unique<VCM>(VCM::Mode::VertexConnectionMerging, scene.integrator_params, scene);
     if (scene.integrator_name == "bpm")

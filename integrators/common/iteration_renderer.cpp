@@ -116,4 +116,32 @@ bool IterationRenderer::for_each_pixel(int iteration, int dimension, const Itera
     return !stopped;
 }
 
+bool IterationRenderer::for_each_path(int iteration, size_t path_count, int dimension,
+                                      const std::function<void(size_t, IterationPixelContext &)> &work) {
+    // Path i uses the sample stream of pixel i mod P (P pixels) at sample index
+    // iteration * rounds + i / P: every path of every iteration gets its own stream.
+    const PixelBounds &bounds = scene_.film->pixel_bounds();
+    const size_t width = size_t(bounds.width());
+    const size_t rounds = (path_count + pixel_count_ - 1) / pixel_count_;
+    constexpr size_t kChunk = 256;
+    std::atomic<bool> stopped{false};
+    tbb::parallel_for(size_t(0), (path_count + kChunk - 1) / kChunk, [&](size_t chunk) {
+        ThreadState &ts = threads_->states.local();
+        IterationPixelContext ctx{*ts.sampler, *ts.sample_scratch, *ts.iteration_scratch, ts.rays,
+                                  ts.non_finite};
+        for (size_t i = chunk * kChunk; i < std::min(path_count, (chunk + 1) * kChunk); ++i) {
+            if (cancelled()) {
+                stopped = true;
+                return;
+            }
+            const size_t p = i % pixel_count_;
+            Vec2i pixel{bounds.min.x + int(p % width), bounds.min.y + int(p / width)};
+            ts.sampler->start_pixel_sample(pixel, int(size_t(iteration) * rounds + i / pixel_count_), dimension);
+            work(i, ctx);
+            ts.sample_scratch->reset();
+        }
+    });
+    return !stopped;
+}
+
 } // namespace caustica

@@ -49,6 +49,11 @@ class IterationRenderer {
     // thread's sampler started at (pixel, iteration, dimension). Returns false if cancelled.
     bool for_each_pixel(int iteration, int dimension, const IterationPixelFunction &work);
 
+    // A parallel pass over path_count paths that belong to no pixel (photons): work(index, ctx),
+    // with the sampler started at a pixel and sample index derived from (iteration, index).
+    bool for_each_path(int iteration, size_t path_count, int dimension,
+                       const std::function<void(size_t index, IterationPixelContext &ctx)> &work);
+
     size_t pixel_count() const { return pixel_count_; }
 
   private:

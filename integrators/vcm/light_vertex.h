@@ -5,16 +5,18 @@
 //   is joined to every vertex of the light path traced for its pixel). Few are read per camera
 //   path, so they can be large.
 // - Photon: the compact record gathered by vertex merging, read in bulk by range queries, so it
-//   is kept small: 32 bytes, plus the 12-byte position the range search indexes (44 in all).
+//   is kept small: 36 bytes, plus the 12-byte position the range search indexes (48 in all).
 //
 // Both carry the recursive MIS quantities of Georgiev et al. 2012 ("Implementing vertex
 // connection and merging", tech. report, section 5) at their vertex: see vcm_mis.h.
 #pragma once
 
 #include "core/octahedral.h"
+#include "integrators/common/photon_side.h"
 #include "materials/bsdf.h"
 #include "spectral/sampled_spectrum.h"
 
+#include <array>
 #include <cstdint>
 
 namespace caustica {
@@ -31,12 +33,19 @@ struct LightVertex {
 };
 
 struct Photon {
-    SampledSpectrum beta;  // as LightVertex::beta
+    // As LightVertex::beta, unaligned (SampledSpectrum's 16-byte alignment would pad the
+    // record to 48 bytes).
+    std::array<float, NumWavelengths> beta_values;
     float d_vcm, d_vm;
     uint32_t wo;           // octahedral-encoded direction towards the previous vertex
+    // Octahedral-encoded geometric normal on the side the photon arrived from: merging only
+    // gathers photons whose surface faces the camera vertex's way (see photon_side.h).
+    uint32_t side_normal;
     uint16_t path_length;
     uint16_t secondary_terminated;
+
+    SampledSpectrum beta() const { return {beta_values[0], beta_values[1], beta_values[2], beta_values[3]}; }
 };
-static_assert(sizeof(Photon) == 32, "photons are kept compact: see the comment above");
+static_assert(sizeof(Photon) == 36, "photons are kept compact: see the comment above");
 
 } // namespace caustica

@@ -3,10 +3,11 @@
 #include "camera/camera.h"
 #include "core/error.h"
 #include "integrators/common/iteration_renderer.h"
+#include "integrators/common/merge_radius.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/vcm/light_vertex.h"
 #include "integrators/vcm/vcm_mis.h"
-#include "integrators/vcm/wavelength_groups.h"
+#include "integrators/common/wavelength_groups.h"
 #include "scene/scene.h"
 #include "spatial/range_search.h"
 
@@ -37,12 +38,7 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
         throw InputError(scene.integrator_location,
                          std::string(name) + " needs a camera whose importance is modelled (perspective); "
                                              "this scene's camera has none");
-    if (base_radius_ == 0) {
-        Vec3f center;
-        float scene_radius = 0;
-        scene.geometry.bounds().bounding_sphere(&center, &scene_radius);
-        base_radius_ = 0.003f * scene_radius;
-    }
+    if (base_radius_ == 0) base_radius_ = default_merge_radius(scene);
     params.report_unused();
 }
 
@@ -327,11 +323,13 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
 SampledSpectrum merge(const CameraPathContext &ctx, const CameraVertex &z, const RangeSearch &search,
                       const std::vector<Photon> &photons, std::vector<uint32_t> &found) {
     search.find_within(z.si.p, ctx.it.radius, found);
+    const Vec3f gather_side = side_normal(z.si.n, z.si.wo);
     SampledSpectrum sum(0.f);
     for (uint32_t index : found) {
         const Photon &photon = photons[index];
         // The merged vertex belongs to both subpaths.
         if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) continue;
+        if (!same_surface_side(decode_octahedral(photon.side_normal), gather_side)) continue;
         const Vec3f wi = decode_octahedral(photon.wo);
         const float cos_ng = abs_dot(wi, z.si.n);
         if (cos_ng == 0) continue;
@@ -344,7 +342,7 @@ SampledSpectrum merge(const CameraPathContext &ctx, const CameraVertex &z, const
         // Photon density is flux per unit of geometric area; the shading-normal BSDF turns it
         // into radiance with |wi.ns| / |wi.ng| (the adjoint correction, Veach 1997, 5.3).
         const float shading = abs_dot(wi, z.si.shading.n) / cos_ng;
-        sum += in_group_measure(f * photon.beta * (shading / (w_light + 1 + w_camera)),
+        sum += in_group_measure(f * photon.beta() * (shading / (w_light + 1 + w_camera)),
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
     }
@@ -500,7 +498,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     std::atomic<uint64_t> traced{0};
 
     renderer.run([&](int iteration) {
-        groups.start_iteration(scene, iteration, pixel_count);
+        groups.start_iteration(scene, iteration, pixel_count, pixel_count);
         const float radius = base_radius_ * std::pow(float(iteration + 1), (alpha_ - 1) / 2);
         Iteration it{scene, max_depth_, use_vc, true, radius, groups, {}, {},
                      float(pixel_count), float(full.x) * float(full.y)};
@@ -514,7 +512,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         for (auto &store : light_vertices) store.clear();
         bool completed = renderer.for_each_pixel(iteration, kLightPathDimension,
                                                  [&](Vec2i, size_t index, IterationPixelContext &pixel) {
-            const int g = groups.group_of(index);
+            const int g = groups.group_of_pixel(index);
             std::vector<LightVertex> &store = light_vertices.local();
             const size_t begin = store.size();
             trace_light_path(LightPathContext{it, pixel, it.weights[g]}, groups.wavelengths(g), store);
@@ -532,11 +530,12 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         }
         for (size_t index = 0; index < pixel_count; ++index) {
             const StoredPath &path = light_paths[index];
-            const int g = groups.group_of(index);
+            const int g = groups.group_of_pixel(index);
             for (uint32_t i = 0; i < path.count; ++i) {
                 const LightVertex &v = (*path.vertices)[path.begin + i];
                 photon_positions[g].push_back(v.p);
-                photons[g].push_back(Photon{v.beta, v.d_vcm, v.d_vm, encode_octahedral(v.wo), v.path_length,
+                photons[g].push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm, encode_octahedral(v.wo),
+                                            encode_octahedral(side_normal(v.ng, v.wo)), v.path_length,
                                             uint16_t(v.secondary_terminated)});
             }
         }
@@ -545,7 +544,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         // Pass 2: one camera subpath per pixel.
         Film &film = *scene.film;
         return renderer.for_each_pixel(iteration, 0, [&](Vec2i pixel, size_t index, IterationPixelContext &ctx) {
-            const int g = groups.group_of(index);
+            const int g = groups.group_of_pixel(index);
             SampledWavelengths lambda = groups.wavelengths(g);
             const SampledWavelengths group_lambda = lambda;
             ctx.sampler.get_1d(); // dimension 0 is the hero wavelength, fixed by the group here

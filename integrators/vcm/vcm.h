@@ -29,8 +29,8 @@ class VCM final : public Integrator {
   public:
     enum class Mode { VertexConnectionMerging, BidirectionalPhotonMapping };
 
-    // Parameters: "maxdepth" (5), the most scattering events of a path; "radius" (0: 0.003 of
-    // the scene's bounding-sphere radius), the initial merge radius r_0 in scene units;
+    // Parameters: "maxdepth" (5), the most scattering events of a path; "radius" (0:
+    // default_merge_radius()), the initial merge radius r_0 in scene units;
     // "alpha" (0.75), the radius reduction exponent; "wavelengthgroups" (4), the wavelength
     // groups per iteration; "photonsearch" ("hashgrid" or "flann"), the range search.
     VCM(Mode mode, const ParameterDictionary &params, const Scene &scene);

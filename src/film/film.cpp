@@ -52,12 +52,16 @@ RGB Film::sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambd
 
 void Film::add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavelengths &lambda,
                       float filter_weight) {
-    assert(!L.has_non_finite() && std::isfinite(filter_weight));
+    assert(!L.has_non_finite());
+    add_sensor_value(pixel, sensor_value(L, lambda), filter_weight);
+}
+
+void Film::add_sensor_value(Vec2i pixel, RGB v, float filter_weight) {
+    assert(std::isfinite(filter_weight));
     assert(pixel_bounds_.contains(pixel));
     // Outside a crop window there is no storage: dropping the sample keeps a caller that
     // iterates the full frame from corrupting memory in release builds.
     if (!pixel_bounds_.contains(pixel)) return;
-    RGB v = sensor_value(L, lambda);
     Pixel &p = pixels_[index(pixel)];
     for (int c = 0; c < 3; ++c) p.rgb_sum[c] += double(filter_weight) * v[c];
     p.weight_sum += filter_weight;

@@ -79,6 +79,11 @@ class Film {
     // finite: integrators count and drop non-finite estimates before they reach the film.
     void add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavelengths &lambda,
                     float filter_weight);
+    // A sample already converted with sensor_value(): for estimators that combine values of
+    // several wavelength sets per pixel before adding them (progressive photon mapping).
+    void add_sensor_value(Vec2i pixel, RGB value, float filter_weight);
+    // A spectral value in the sensor's space (clamped to "maxcomponentvalue").
+    RGB sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const;
     // A light-tracing contribution at a raster position; reaches every pixel within the
     // filter's radius, weighted by the filter. Thread-safe and order-independent.
     void add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda);
@@ -89,7 +94,6 @@ class Film {
     Image get_image(double splat_scale) const;
 
   private:
-    RGB sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const;
     size_t index(Vec2i pixel) const {
         return size_t(pixel.y - pixel_bounds_.min.y) * pixel_bounds_.width() + (pixel.x - pixel_bounds_.min.x);
     }

@@ -1,0 +1,350 @@
+#include "integrators/sppm/sppm.h"
+
+#include "core/error.h"
+#include "core/octahedral.h"
+#include "core/sampling.h"
+#include "integrators/common/iteration_renderer.h"
+#include "integrators/common/light_sampling.h"
+#include "integrators/common/merge_radius.h"
+#include "integrators/common/path_vertex.h"
+#include "integrators/common/photon_side.h"
+#include "integrators/common/wavelength_groups.h"
+#include "scene/scene.h"
+#include "spatial/range_search.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace caustica {
+
+SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
+    : max_depth_(params.get_one_int("maxdepth", 5)), initial_radius_(params.get_one_float("radius", 0)),
+      photons_per_iteration_(params.get_one_int("photonsperiteration", -1)),
+      wavelength_groups_(params.get_one_int("wavelengthgroups", 4)),
+      seed_(uint64_t(params.get_one_int("seed", 0)) + scene.overrides.seed),
+      photon_search_(params.get_one_string("photonsearch", "hashgrid")) {
+    if (max_depth_ < 0)
+        throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
+    if (initial_radius_ < 0 || !std::isfinite(initial_radius_))
+        throw InputError(params.location("radius"), "\"radius\" must be a positive distance (or 0 for the default)");
+    if (initial_radius_ == 0) initial_radius_ = default_merge_radius(scene);
+    if (photons_per_iteration_ == 0 || photons_per_iteration_ < -1)
+        throw InputError(params.location("photonsperiteration"),
+                         "\"photonsperiteration\" must be positive (or -1: one per pixel)");
+    if (wavelength_groups_ < 1 || wavelength_groups_ > 64)
+        throw InputError(params.location("wavelengthgroups"), "\"wavelengthgroups\" must lie in [1, 64]");
+    if (photon_search_ != "hashgrid" && photon_search_ != "flann")
+        throw InputError(params.location("photonsearch"), "\"photonsearch\" must be \"hashgrid\" or \"flann\"");
+    params.report_unused();
+}
+
+namespace {
+
+constexpr int kPhotonDimension = 1 << 12;
+// The fraction of newly gathered photons kept by the radius reduction (Hachisuka and Jensen
+// 2009 use 0.7; pbrt-v4 2/3).
+constexpr float kGamma = 2.f / 3.f;
+
+struct VisiblePoint {
+    Vec3f p, ng, ns, wo;
+    BSDF bsdf;                 // in the iteration's scratch memory; null: no visible point
+    SampledSpectrum beta;      // camera path throughput up to the point
+    SampledWavelengths lambda; // the path's wavelengths (terminated if it crossed dispersion)
+};
+
+struct PixelState {
+    float radius = 0;
+    RGB direct_sum;            // direct lighting along camera paths, summed over iterations
+    float photons = 0;         // N: photons the estimate is made of
+    RGB tau;                   // accumulated, radius-scaled flux
+    // This iteration:
+    RGB direct;
+    VisiblePoint vp;
+};
+
+struct StoredPhoton {
+    SampledSpectrum beta;
+    uint32_t wi;               // octahedral, towards where the photon came from
+    uint32_t side_normal;      // octahedral, see photon_side.h
+    bool secondary_terminated;
+};
+
+// Direct lighting and the visible point of one pixel's camera path.
+void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectrum beta,
+                       SampledWavelengths lambda, IterationPixelContext &ctx, SampledSpectrum &L,
+                       VisiblePoint &vp) {
+    bool specular_bounce = false;
+    float bsdf_pdf = 0;
+    LightSampleContext previous{};
+    const Material *absorbing_interior = nullptr;
+    Sampler &sampler = ctx.sampler;
+    // Emission reached by BSDF sampling, weighted against next-event estimation as in the path
+    // tracer (only glossy bounces can precede it: the path stops at diffuse surfaces).
+    auto add_emission = [&](const Light &light, const SampledSpectrum &Le, int depth, Vec3f wi) {
+        float w = 1;
+        if (depth > 0 && !specular_bounce)
+            w = power_heuristic(1, bsdf_pdf, 1, light_pdf(scene, light, previous, wi));
+        L += beta * Le * w;
+    };
+    for (int depth = 0;; ++depth) {
+        SurfaceInteraction si;
+        ++ctx.rays;
+        bool hit = scene.intersect(ray, &si);
+        if (absorbing_interior) {
+            if (!hit) return;
+            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * (si.t * length(ray.d)));
+        }
+        if (!hit) {
+            for (const Light *light : scene.infinite_lights)
+                add_emission(*light, light->Le(ray, lambda), depth, normalize(ray.d));
+            return;
+        }
+        if (si.area_light)
+            add_emission(*si.area_light, si.area_light->L(si.p, si.n, si.uv, si.wo, lambda), depth, -si.wo);
+        BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.iteration_scratch) : BSDF();
+        if (!bsdf) {
+            ray = si.spawn_ray(ray.d);
+            --depth;
+            continue;
+        }
+        if (depth == max_depth) return;
+        const LightSampleContext here{si.p, si.n, si.shading.n};
+        const BxDFFlags flags = bsdf.flags();
+        if (is_non_specular(flags))
+            L += beta * sample_direct_lighting(scene, si, bsdf, here, lambda, sampler, ctx.rays);
+        if (is_diffuse(flags) || (is_glossy(flags) && depth == max_depth - 1)) {
+            vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, bsdf, beta, lambda};
+            return;
+        }
+        float u = sampler.get_1d();
+        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
+        if (!bs) return;
+        if (bs->dispersive && !lambda.secondary_terminated()) {
+            lambda.terminate_secondary();
+            for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
+        }
+        beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
+        bsdf_pdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
+        specular_bounce = bs->is_specular();
+        previous = here;
+        if (bs->is_transmission() && si.material->has_interior_absorption())
+            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        ray = si.spawn_ray(bs->wi);
+        if (beta.is_black()) return;
+    }
+}
+
+// One photon path: every non-specular surface after the first is a photon.
+void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, IterationPixelContext &ctx,
+                  std::vector<Vec3f> &positions, std::vector<StoredPhoton> &photons) {
+    Sampler &sampler = ctx.sampler;
+    auto chosen = scene.light_sampler->sample(sampler.get_1d());
+    Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
+    if (!chosen) return;
+    auto les = chosen->light->sample_le(u_position, u_direction, lambda);
+    if (!les || les->L.is_black() || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return;
+    const float cos_light = les->n == Vec3f{} ? 1.f : abs_dot(les->n, normalize(les->ray.d));
+    SampledSpectrum beta = les->L * (cos_light / (chosen->pmf * les->pdf_pos * les->pdf_dir));
+    Ray ray = les->ray;
+    const Material *absorbing_interior = nullptr;
+    for (int depth = 0; depth < max_depth; ++depth) {
+        SurfaceInteraction si;
+        ++ctx.rays;
+        bool hit = scene.intersect(ray, &si);
+        if (absorbing_interior) {
+            if (!hit) return;
+            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * (si.t * length(ray.d)));
+        }
+        if (!hit) return;
+        BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.sample_scratch) : BSDF();
+        if (!bsdf) {
+            ray = si.spawn_ray(ray.d);
+            --depth;
+            continue;
+        }
+        if (depth > 0 && is_non_specular(bsdf.flags())) {
+            positions.push_back(si.p);
+            photons.push_back(StoredPhoton{beta, encode_octahedral(si.wo), encode_octahedral(side_normal(si.n, si.wo)),
+                                           lambda.secondary_terminated()});
+        }
+        float u = sampler.get_1d();
+        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
+        if (!bs) return;
+        if (bs->dispersive && !lambda.secondary_terminated()) {
+            lambda.terminate_secondary();
+            for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
+        }
+        SampledSpectrum next = beta * bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
+        // Russian roulette keeps the photons' power roughly constant (pbrt-v4 15.4.2).
+        float q = std::max(0.f, 1 - next.max_value() / beta.max_value());
+        if (sampler.get_1d() < q) return;
+        beta = next / (1 - q);
+        if (bs->is_transmission() && si.material->has_interior_absorption())
+            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        ray = si.spawn_ray(bs->wi);
+        if (beta.is_black()) return;
+    }
+}
+
+} // namespace
+
+void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
+                  const ProgressCallback &progress) {
+    Film &film = *scene.film;
+    const PixelBounds &bounds = film.pixel_bounds();
+    std::vector<PixelState> pixels(size_t(bounds.width()) * bounds.height());
+    for (PixelState &state : pixels) state.radius = initial_radius_;
+    const size_t photon_count = photons_per_iteration_ > 0 ? size_t(photons_per_iteration_) : pixels.size();
+    WavelengthGroups groups(wavelength_groups_, seed_);
+    std::vector<std::unique_ptr<RangeSearch>> searches;
+    for (int g = 0; g < wavelength_groups_; ++g) searches.push_back(create_range_search(photon_search_));
+    std::vector<std::vector<Vec3f>> group_positions(wavelength_groups_);
+    std::vector<std::vector<StoredPhoton>> group_photons(wavelength_groups_);
+    struct PhotonBuffer {
+        std::vector<Vec3f> positions;
+        std::vector<StoredPhoton> photons;
+        std::vector<std::pair<size_t, size_t>> ranges; // (path index, photon count)
+    };
+    tbb::enumerable_thread_specific<PhotonBuffer> buffers;
+    tbb::enumerable_thread_specific<std::vector<uint32_t>> found;
+    int iterations = 0;
+
+    {
+        IterationRenderer renderer(scene, budget, stats, progress);
+        renderer.run([&](int iteration) {
+            groups.start_iteration(scene, iteration, pixels.size(), photon_count);
+            // Camera pass: visible points and direct lighting.
+            bool completed = renderer.for_each_pixel(iteration, 0, [&](Vec2i pixel, size_t index, IterationPixelContext &ctx) {
+                PixelState &state = pixels[index];
+                SampledWavelengths lambda = groups.wavelengths(groups.group_of_pixel(index));
+                ctx.sampler.get_1d(); // the hero wavelength is the group's
+                CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
+                state.vp = VisiblePoint{};
+                SampledSpectrum L(0.f);
+                if (auto camera_ray = scene.camera->generate_ray(cs, lambda))
+                    trace_camera_path(scene, max_depth_, camera_ray->ray, camera_ray->weight, lambda, ctx, L,
+                                      state.vp);
+                if (L.has_non_finite()) {
+                    ++ctx.non_finite;
+                    L = SampledSpectrum(0.f);
+                }
+                state.direct = film.sensor_value(L, lambda);
+            });
+            if (!completed) return false;
+
+            // Photon pass, then the photons of each group in path order (thread-independent).
+            for (PhotonBuffer &b : buffers) {
+                b.positions.clear();
+                b.photons.clear();
+                b.ranges.clear();
+            }
+            completed = renderer.for_each_path(iteration, photon_count, kPhotonDimension,
+                                               [&](size_t index, IterationPixelContext &ctx) {
+                PhotonBuffer &b = buffers.local();
+                const size_t before = b.photons.size();
+                trace_photon(scene, max_depth_, groups.wavelengths(groups.group_of_light_path(index)), ctx,
+                             b.positions, b.photons);
+                if (b.photons.size() > before) b.ranges.emplace_back(index, b.photons.size() - before);
+            });
+            if (!completed) return false;
+            struct Run {
+                size_t path;
+                const PhotonBuffer *buffer;
+                size_t begin, count;
+            };
+            std::vector<Run> runs;
+            for (const PhotonBuffer &b : buffers) {
+                size_t begin = 0;
+                for (auto [path, count] : b.ranges) {
+                    runs.push_back({path, &b, begin, count});
+                    begin += count;
+                }
+            }
+            std::sort(runs.begin(), runs.end(), [](const Run &a, const Run &b) { return a.path < b.path; });
+            for (int g = 0; g < groups.count(); ++g) {
+                group_positions[g].clear();
+                group_photons[g].clear();
+            }
+            for (const Run &run : runs) {
+                const int g = groups.group_of_light_path(run.path);
+                for (size_t i = run.begin; i < run.begin + run.count; ++i) {
+                    group_positions[g].push_back(run.buffer->positions[i]);
+                    group_photons[g].push_back(run.buffer->photons[i]);
+                }
+            }
+            float max_radius = 0;
+            for (const PixelState &state : pixels) max_radius = std::max(max_radius, state.radius);
+            for (int g = 0; g < groups.count(); ++g) searches[g]->build(group_positions[g], max_radius);
+
+            // Gather pass: each visible point's photons, then the progressive update. It traces
+            // no rays and is not interrupted, so that every pixel's statistics describe the same
+            // number of completed iterations.
+            tbb::parallel_for(size_t(0), pixels.size(), [&](size_t index) {
+                PixelState &state = pixels[index];
+                state.direct_sum += state.direct;
+                const VisiblePoint &vp = state.vp;
+                if (!vp.bsdf) return;
+                const int g = groups.group_of_pixel(index);
+                std::vector<uint32_t> &near = found.local();
+                searches[g]->find_within(vp.p, state.radius, near);
+                if (near.empty()) return;
+                SampledSpectrum phi(0.f);
+                const Vec3f gather_side = side_normal(vp.ng, vp.wo);
+                int gathered = 0;
+                for (uint32_t i : near) {
+                    const StoredPhoton &photon = group_photons[g][i];
+                    if (!same_surface_side(decode_octahedral(photon.side_normal), gather_side)) continue;
+                    ++gathered;
+                    const Vec3f wi = decode_octahedral(photon.wi);
+                    const float cos_ng = abs_dot(wi, vp.ng);
+                    if (cos_ng == 0) continue;
+                    SampledSpectrum f = vp.bsdf.f(vp.wo, wi, TransportMode::Radiance) * (abs_dot(wi, vp.ns) / cos_ng);
+                    SampledSpectrum contribution = f * photon.beta;
+                    // A photon and a visible point of the same group share wavelengths; if
+                    // either crossed dispersion, only the hero is valid, in the terminated
+                    // set's measure.
+                    if (photon.secondary_terminated && !vp.lambda.secondary_terminated()) {
+                        SampledWavelengths terminated = vp.lambda;
+                        terminated.terminate_secondary();
+                        contribution *= vp.lambda.pdf()[0] / terminated.pdf()[0];
+                        for (int c = 1; c < NumWavelengths; ++c) contribution[c] = 0;
+                    }
+                    phi += contribution;
+                }
+                SampledSpectrum flux = vp.beta * phi;
+                if (flux.has_non_finite()) return;
+                // All photons of the iteration over the group's: the final normalisation divides
+                // by the total photon count.
+                const float group_scale = float(photon_count) / float(groups.light_path_count(g));
+                RGB phi_rgb = film.sensor_value(flux, vp.lambda) * group_scale;
+                if (gathered == 0) return;
+                const float m = float(gathered);
+                const float n_new = state.photons + kGamma * m;
+                const float r_new = state.radius * std::sqrt(n_new / (state.photons + m));
+                state.tau = (state.tau + phi_rgb) * sqr(r_new / state.radius);
+                state.photons = n_new;
+                state.radius = r_new;
+            });
+            return true;
+        });
+        iterations = stats.samples_per_pixel;
+    }
+
+    // The image: direct lighting averaged over the iterations, plus the photon estimate
+    // tau / (N_emitted pi r^2).
+    if (iterations == 0) return;
+    const double emitted = double(iterations) * double(photon_count);
+    size_t index = 0;
+    for (int y = bounds.min.y; y < bounds.max.y; ++y)
+        for (int x = bounds.min.x; x < bounds.max.x; ++x, ++index) {
+            const PixelState &state = pixels[index];
+            RGB value = state.direct_sum / float(iterations) +
+                        state.tau / float(emitted * Pi * sqr(state.radius));
+            film.add_sensor_value({x, y}, value, 1);
+        }
+}
+
+} // namespace caustica
