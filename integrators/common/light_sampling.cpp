@@ -13,7 +13,7 @@ float light_pdf(const Scene &scene, const Light &light, const LightSampleContext
 SampledSpectrum sample_direct_lighting(const Scene &scene, const SurfaceInteraction &si,
                                        const BSDF &bsdf, const LightSampleContext &ctx,
                                        const SampledWavelengths &lambda, Sampler &sampler,
-                                       uint64_t &rays, TransportMode mode) {
+                                       uint64_t &rays, TransportMode mode, DirectLighting strategy) {
     float u_light = sampler.get_1d();
     Vec2f u = sampler.get_2d();
     auto sampled = scene.light_sampler->sample(u_light);
@@ -29,7 +29,7 @@ SampledSpectrum sample_direct_lighting(const Scene &scene, const SurfaceInteract
     if (scene.occluded(shadow)) return {};
 
     float p_light = sampled->pmf * ls->pdf;
-    if (is_delta_light(light.type())) return f * ls->L / p_light;
+    if (is_delta_light(light.type()) || strategy == DirectLighting::LightSamplingOnly) return f * ls->L / p_light;
     float p_bsdf = bsdf.pdf(si.wo, ls->wi, mode);
     return f * ls->L * (power_heuristic(1, p_light, 1, p_bsdf) / p_light);
 }

@@ -15,11 +15,17 @@ struct SurfaceInteraction;
 // the light-selection probability times the light's own pdf.
 float light_pdf(const Scene &scene, const Light &light, const LightSampleContext &ctx, Vec3f wi);
 
-// One light sample, weighted against BSDF sampling with the power heuristic: the contribution
-// f * Le * |cos| / pdf, before the path throughput. Shadow rays are counted in rays.
+// Whether the caller also finds lights by BSDF sampling from the same point (and weights those
+// hits with the complementary MIS weight), or relies on light sampling alone.
+enum class DirectLighting { WeightedAgainstBsdfSampling, LightSamplingOnly };
+
+// One light sample: the contribution f * Le * |cos| / pdf, before the path throughput,
+// weighted against BSDF sampling with the power heuristic unless light sampling is the only
+// strategy. Shadow rays are counted in rays.
 SampledSpectrum sample_direct_lighting(const Scene &scene, const SurfaceInteraction &si,
                                        const BSDF &bsdf, const LightSampleContext &ctx,
                                        const SampledWavelengths &lambda, Sampler &sampler,
-                                       uint64_t &rays, TransportMode mode = TransportMode::Radiance);
+                                       uint64_t &rays, TransportMode mode = TransportMode::Radiance,
+                                       DirectLighting strategy = DirectLighting::WeightedAgainstBsdfSampling);
 
 } // namespace caustica

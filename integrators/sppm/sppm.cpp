@@ -113,9 +113,15 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
         if (depth == max_depth) return;
         const LightSampleContext here{si.p, si.n, si.shading.n};
         const BxDFFlags flags = bsdf.flags();
+        // The path ends at its visible point, so there the light is found by light sampling
+        // alone; where it goes on, BSDF-sampled hits on lights take their share by MIS.
+        const bool visible_point = is_diffuse(flags) || (is_glossy(flags) && depth == max_depth - 1);
         if (is_non_specular(flags))
-            L += beta * sample_direct_lighting(scene, si, bsdf, here, lambda, sampler, ctx.rays);
-        if (is_diffuse(flags) || (is_glossy(flags) && depth == max_depth - 1)) {
+            L += beta * sample_direct_lighting(scene, si, bsdf, here, lambda, sampler, ctx.rays,
+                                               TransportMode::Radiance,
+                                               visible_point ? DirectLighting::LightSamplingOnly
+                                                             : DirectLighting::WeightedAgainstBsdfSampling);
+        if (visible_point) {
             vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, bsdf, beta, lambda};
             return;
         }

@@ -33,6 +33,29 @@ inline RgbImage read_rgb(const std::string &path) {
     return img;
 }
 
+// The layer of an EXR whose channels are named prefix.R, prefix.G, prefix.B (e.g. the
+// "variance" layer of `caustica render --variance`).
+inline RgbImage read_layer(const std::string &path, const std::string &prefix) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    const OIIO::ImageSpec &spec = in->spec();
+    RgbImage img;
+    img.width = spec.width;
+    img.height = spec.height;
+    img.rgb.resize(size_t(spec.width) * spec.height * 3);
+    const char *suffix[3] = {".R", ".G", ".B"};
+    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
+        throw std::runtime_error("cannot read " + path);
+    for (int c = 0; c < 3; ++c) {
+        int channel = spec.channelindex(prefix + suffix[c]);
+        if (channel < 0) throw std::runtime_error(path + " has no channel " + prefix + suffix[c]);
+        for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i)
+            img.rgb[i * 3 + c] = all[i * spec.nchannels + channel];
+    }
+    return img;
+}
+
 inline std::string data_path(const std::string &relative) {
     return std::string(CAUSTICA_TEST_DATA) + "/" + relative;
 }
@@ -47,9 +70,12 @@ inline std::string scratch_dir(const std::string &name) {
     return dir.string();
 }
 
-// Runs `caustica ARGS`, returns its exit status; stderr goes to stderr_path when given.
-inline int run_caustica(const std::string &args, const std::string &stderr_path = "") {
-    std::string cmd = std::string(CAUSTICA_BINARY) + " " + args + " > /dev/null";
+// Runs `caustica ARGS`, returns its exit status; stderr goes to stderr_path when given, and
+// environment (e.g. "NAME=value") is prefixed to the command.
+inline int run_caustica(const std::string &args, const std::string &stderr_path = "",
+                        const std::string &environment = "") {
+    std::string cmd = environment + (environment.empty() ? "" : " ") + std::string(CAUSTICA_BINARY) + " " +
+                      args + " > /dev/null";
     cmd += stderr_path.empty() ? " 2>/dev/null" : " 2>" + stderr_path;
     int status = std::system(cmd.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
