@@ -1,4 +1,4 @@
-// The caustica command: `caustica render SCENE ...` and `caustica info SCENE`.
+// The caustica command: `caustica render SCENE ...`, `info`, `diff` and `compare`.
 #include "cli/commands.h"
 #include "core/error.h"
 
@@ -47,6 +47,26 @@ int main(int argc, char **argv) {
     diff_cmd->add_option("--threshold", diff.threshold, "Exit with status 1 when the relative MSE exceeds this")
         ->check(CLI::NonNegativeNumber);
 
+    CompareCommandOptions compare;
+    CLI::App *compare_cmd = app.add_subcommand(
+        "compare", "Render a scene with several integrators at doubling time budgets and report their errors");
+    compare_cmd->add_option("scene", compare.scene_path, "Scene file (.pbrt)")->required();
+    compare_cmd->add_option("--integrators", compare.integrators, "Comma-separated integrators, e.g. pt,lt,bdpt")
+        ->required()
+        ->delimiter(',')
+        ->allow_extra_args(false); // one list per --integrators: a scene after it is not a name
+    compare_cmd->add_option("--time", compare.seconds, "Longest budget T in seconds; budgets are T/16, T/8, ..., T")
+        ->required()
+        ->check(CLI::Range(0.001, 1e7));
+    compare_cmd->add_option("--reference", compare.reference_path,
+                            "Reference image (.exr); default: the first integrator's longest run");
+    compare_cmd->add_option("--out", compare.out_dir, "Output directory (created; files in it are replaced)")
+        ->required();
+    compare_cmd->add_option("--seed", compare.seed, "Random seed (the same for every render)");
+    compare_cmd->add_option("--resolution", compare.resolution, "Image size WxH");
+    compare_cmd->add_option("--threads", compare.threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, 4096));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
@@ -58,6 +78,7 @@ int main(int argc, char **argv) {
         if (*render_cmd) return run_render(render);
         if (*info_cmd) return run_info(info_scene);
         if (*diff_cmd) return run_diff(diff);
+        if (*compare_cmd) return run_compare(compare);
     } catch (const InputError &e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 2;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace caustica {
 
@@ -29,6 +30,17 @@ struct DiffCommandOptions {
     double threshold = -1; // >= 0: exit 1 when the relative MSE exceeds it
 };
 
+struct CompareCommandOptions {
+    std::string scene_path;
+    std::vector<std::string> integrators; // in the order given; the first is the default reference
+    double seconds = 0;                   // the longest time budget, T
+    std::string reference_path;           // empty: the first integrator's longest run
+    std::string out_dir;
+    uint64_t seed = 0;
+    std::string resolution;               // "WxH", empty: the scene's
+    int threads = 0;                      // 0: all cores
+};
+
 // Error of an image against a reference, over all pixels and channels: root mean squared
 // error, relative MSE (x - r)^2 / (r^2 + 0.01) and mean relative difference |x - r| / (|r| + 0.01).
 struct ImageDifference {
@@ -39,6 +51,7 @@ ImageDifference image_difference(const Image &image, const Image &reference);
 
 int run_render(const RenderCommandOptions &options);
 int run_diff(const DiffCommandOptions &options);
+int run_compare(const CompareCommandOptions &options);
 int run_info(const std::string &scene_path);
 
 } // namespace caustica

@@ -1,20 +1,16 @@
 #include "cli/commands.h"
 #include "cli/progress_reporter.h"
+#include "cli/render_session.h"
 #include "core/error.h"
-#include "integrators/integrator.h"
 #include "film/image_io.h"
 #include "parser/scene_description.h"
-#include "scene/scene.h"
 
 #include <tbb/global_control.h>
-#include <tbb/info.h>
 
 #include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
-#include <map>
-#include <sstream>
 #include <sys/resource.h>
 
 namespace caustica {
@@ -23,14 +19,6 @@ namespace {
 
 bool ends_with(const std::string &s, const std::string &suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-void parse_resolution(const std::string &text, int *w, int *h) {
-    char x = 0;
-    std::istringstream in(text);
-    if (!(in >> *w >> x >> *h) || (x != 'x' && x != 'X') || !in.eof() || *w <= 0 || *h <= 0 ||
-        *w > 65536 || *h > 65536)
-        throw InputError("--resolution expects WxH with 1 <= W, H <= 65536, got \"" + text + "\"");
 }
 
 // SIGINT / SIGTERM stop the render: the handler only raises a flag (a lock-free atomic store is
@@ -93,8 +81,8 @@ int run_render(const RenderCommandOptions &options) {
         throw InputError("--wavelength must lie in [360, 830] nm");
 
     SceneDescription description = parse_scene_file(options.scene_path);
-    std::unique_ptr<Scene> scene = build_scene(description, overrides);
-    std::unique_ptr<Integrator> integrator = create_integrator(*scene);
+    RenderSession session = create_render_session(description, overrides);
+    Scene *scene = session.scene.get();
 
     std::string exr_path = options.exr_path.empty() ? scene->output_filename : options.exr_path;
     std::string png_path = options.png_path;
@@ -105,7 +93,7 @@ int run_render(const RenderCommandOptions &options) {
         throw InputError("output \"" + exr_path + "\" must end in .exr or .png");
     }
 
-    int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+    int threads = worker_thread_count(options.threads);
     tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, threads);
 
     if (options.variance_layer) scene->film->enable_variance();
@@ -118,19 +106,13 @@ int run_render(const RenderCommandOptions &options) {
 
     RenderStats stats;
     ProgressReporter progress(!options.quiet);
-    integrator->render(*scene, budget, stats,
-                       [&progress](double fraction, uint64_t samples) { progress.update(fraction, samples); });
+    session.render(budget, stats,
+                   [&progress](double fraction, uint64_t samples) { progress.update(fraction, samples); });
     progress.finish();
 
-    Image image = scene->film->get_image(integrator->splat_scale(*scene, stats));
-    std::map<std::string, std::string> metadata = {
-        {"caustica:integrator", scene->integrator_name},
-        {"caustica:spp", std::to_string(stats.samples_per_pixel)},
-        {"caustica:seed", std::to_string(options.seed)},
-        {"caustica:scene", options.scene_path},
-        {"caustica:partial", stats.interrupted ? "true" : "false"},
-    };
-    if (!exr_path.empty()) write_exr(exr_path, image, metadata);
+    Image image = session.image(stats);
+
+    if (!exr_path.empty()) write_exr(exr_path, image, render_metadata(*scene, stats, options.seed, options.scene_path));
     if (!png_path.empty()) write_png(png_path, image);
     if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads);
 
