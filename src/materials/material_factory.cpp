@@ -3,6 +3,7 @@
 #include "materials/conductor_material.h"
 #include "materials/dielectric_material.h"
 #include "materials/diffuse_material.h"
+#include "materials/disney_material.h"
 #include "params/constant_textures.h"
 #include "params/parameters.h"
 #include "spectral/ior.h"
@@ -167,6 +168,8 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         SpectrumPtr eta = read_ior(params);
         MicrofacetRoughness roughness = read_roughness(params, textures);
         material = std::make_shared<DielectricMaterial>(eta, roughness, read_interior_absorption(params));
+    } else if (type == "disney") {
+        material = create_disney_material(params, textures, read_ior(params), read_interior_absorption(params));
     } else if (type == "thindielectric") {
         material = std::make_shared<ThinDielectricMaterial>(read_ior(params));
     } else if (std::find(UnsupportedMaterials.begin(), UnsupportedMaterials.end(), type) !=

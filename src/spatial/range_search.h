@@ -4,7 +4,13 @@
 //
 // Two implementations sit behind this interface (create_range_search): a kd-tree radius search
 // from FLANN, and the hashed uniform grid of the VCM paper (Georgiev et al. 2012, section 6),
-// whose cells are as wide as the largest query radius so that a query visits 2x2x2 cells.
+// whose cells are twice as wide as the largest query radius so that a query ball (diameter at
+// most one cell) overlaps at most 2x2x2 cells.
+//
+// Conventions shared by both: a point is found when its float squared distance to the center,
+// (dx*dx + dy*dy) + dz*dz, is strictly less than radius*radius, so radius 0 finds nothing and
+// points exactly at the radius are excluded. Points, centers and radii are assumed finite (no
+// NaN or infinity); at most 2^32 - 1 points.
 #pragma once
 
 #include "core/vecmath.h"
@@ -24,7 +30,8 @@ class RangeSearch {
     // valid until the next build) for queries of radius at most max_radius.
     virtual void build(std::span<const Vec3f> points, float max_radius) = 0;
     // Replaces the contents of indices with the indices (into the built span) of every point
-    // whose distance to center is less than radius (radius <= max_radius), in no fixed order.
+    // whose distance to center is less than radius, in no fixed order. Requires
+    // 0 <= radius <= max_radius (std::invalid_argument otherwise).
     virtual void find_within(Vec3f center, float radius, std::vector<uint32_t> &indices) const = 0;
     // Bytes the structure holds beyond the points themselves, for memory reports.
     virtual size_t memory_bytes() const = 0;

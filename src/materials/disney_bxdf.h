@@ -1,0 +1,146 @@
+// The Disney BSDF: Burley 2015, "Extending the Disney BRDF to a BSDF with Integrated Subsurface
+// Scattering" (SIGGRAPH course notes), built on the Disney BRDF of Burley 2012, "Physically-Based
+// Shading at Disney". The subsurface diffusion of the notes is not part of this BxDF: the
+// diffuse lobe is always the BRDF's (what the notes use when scatterDistance is 0).
+//
+// The BSDF is a blend of three models (the notes' Figure 4), with weights
+//   metallic BRDF     metallic
+//   dielectric BRDF   (1 - metallic) (1 - specTrans)
+//   specular BSDF     (1 - metallic) specTrans,
+// plus two lobes outside the blend: sheen, weighted by 1 - metallic (it belongs to both
+// non-metallic models, section 2.2), and clearcoat. The lobes are
+//   - diffuse (dielectric BRDF): eq. 4, Lambert with Schlick-weight edge darkening plus the
+//     roughness-dependent retro-reflection. On thin surfaces (section 2.6) the Lambertian part
+//     is blended towards the Hanrahan-Krueger-like shape of the 2012 BRDF by `flatness` and
+//     shares its energy with an isotropic diffuse transmission lobe through `diffTrans`;
+//   - sheen: sheen (1 - cos theta_d)^5, tinted towards the base colour's hue by sheenTint;
+//   - specular reflection (metallic and dielectric BRDFs): GGX with anisotropic roughness and
+//     Heitz's height-correlated Smith G (section 3.3). The metal's Fresnel factor is Schlick's
+//     with F0 = baseColor; the dielectric's is the exact Fresnel term blended by specularTint
+//     towards Schlick's with the tinted F0 and the critical-angle fix of eq. 7 (section 3.1);
+//   - specular BSDF on solids (section 2.2): Walter et al.'s rough dielectric with the exact
+//     Fresnel term (DielectricBxDF: the 1/eta^2 factor in Radiance mode only, dispersion), its
+//     transmission multiplied by sqrt(baseColor) (surface absorption; entering and leaving
+//     through the surface applies it twice);
+//   - thin specular transmission (section 2.6): the reflection lobe's microfacet model mirrored
+//     to the other side, with roughness scaled by 0.65 eta - 0.35 (Figure 15), weighted by
+//     1 - F and the full baseColor (one event stands for entering and leaving);
+//   - clearcoat (2012 model, unchanged per section 3.3): GTR1 with alpha from clearcoatGloss,
+//     Schlick with F0 = 0.04 (eta 1.5), separable Smith G of GGX with alpha 0.25, scaled by
+//     clearcoat / 4.
+//
+// Sides. The solid specular BSDF is the only lobe that knows inside from outside (its eta is
+// the inside's index over the outside's). The diffuse and specular reflection lobes are
+// two-sided: seen from below they are the mirror image of the lobes seen from above, with
+// relative index eta. For a thin surface both sides are outsides by definition; for a solid with
+// specTrans < 1 the BRDF part is an opaque-surface model, and light that meets it from inside
+// scatters back as it would from outside (no total internal reflection outside the specular
+// BSDF). Sheen and clearcoat are layers on the outside: thin surfaces have them on both faces,
+// solids only for light arriving from outside (from inside they would add reflection to total
+// internal reflection, creating energy).
+//
+// Sampling picks one lobe with probability proportional to an estimate of its directional
+// albedo at wo (any positive choice is unbiased; a good one keeps f |cos| / pdf near the total
+// albedo). For non-delta samples f and pdf are the whole BSDF's: pdf is the sum over lobes of
+// selection probability times the lobe's density, which is what f / pdf and MIS need. Delta
+// lobes (roughness 0: mirror reflection, smooth refraction, straight-through thin transmission)
+// return their own value with pdf = selection probability times the discrete probability.
+#pragma once
+
+#include "materials/bxdf.h"
+#include "materials/dielectric_bxdf.h"
+#include "materials/microfacet.h"
+
+namespace caustica {
+
+// The Disney BSDF's inputs at one surface point for the path's wavelengths. Scalars are
+// expected in their documented ranges (DisneyMaterial clamps textured values to them).
+struct DisneyParameters {
+    SampledSpectrum base_color = SampledSpectrum(0.5f);  // [0, 1]
+    // The base colour's luminance (CIE Y of the reflectance under an equal-energy illuminant):
+    // specular and sheen tints are base_color / luminance, the colour's hue and saturation.
+    float base_luminance = 0.5f;
+    float metallic = 0;         // [0, 1]
+    float roughness = 0.5f;     // [0, 1]
+    float anisotropic = 0;      // [0, 1]
+    float specular_tint = 0;    // [0, 1]
+    float sheen = 0;            // >= 0
+    float sheen_tint = 0.5f;    // [0, 1]
+    float clearcoat = 0;        // >= 0
+    float clearcoat_gloss = 1;  // [0, 1]
+    float spec_trans = 0;       // [0, 1]
+    // Index of the inside relative to the outside, per wavelength.
+    SampledSpectrum eta = SampledSpectrum(1.5f);
+    // One index for the whole spectrum where the model needs a single number: the thin-surface
+    // transmission roughness scale. DisneyMaterial uses the index at the helium d line.
+    float reference_eta = 1.5f;
+    bool thin = false;
+    float diff_trans = 0;  // [0, 2], thin surfaces only
+    float flatness = 0;    // [0, 1], thin surfaces only
+};
+
+class DisneyBxDF final : public BxDF {
+  public:
+    explicit DisneyBxDF(const DisneyParameters &p);
+
+    SampledSpectrum f(Vec3f wo, Vec3f wi, TransportMode mode) const override;
+    std::optional<BSDFSample> sample_f(Vec3f wo, float uc, Vec2f u, TransportMode mode,
+                                       SampleFlags flags = SampleFlags::All) const override;
+    float pdf(Vec3f wo, Vec3f wi, TransportMode mode,
+              SampleFlags flags = SampleFlags::All) const override;
+    BxDFFlags flags() const override;
+
+    // The 2012 mapping from roughness and anisotropic to GGX alphas: alpha = roughness^2,
+    // stretched by aspect = sqrt(1 - 0.9 anisotropic) (alpha_x = alpha / aspect along dpdu).
+    static TrowbridgeReitzDistribution specular_distribution(float roughness, float anisotropic);
+    // Clearcoat's GTR1 (Berry) distribution: D(wm) = (a^2 - 1) / (pi ln(a^2) (1 + (a^2 - 1)
+    // cos^2 theta_m)), normalised so that the projected microfacet area is 1. wm is a unit
+    // vector: the denominator is evaluated as sin^2 + a^2 cos^2, which keeps its precision for
+    // alpha = 0.001, where 1 - cos^2 would cancel.
+    static float gtr1(Vec3f wm, float alpha);
+    // Clearcoat alpha: 0.1 at gloss 0 down to 0.001 at gloss 1.
+    static float clearcoat_alpha(float gloss) { return lerp(gloss, 0.1f, 0.001f); }
+    // The thin-surface transmission roughness (Figure 15): roughness (0.65 eta - 0.35).
+    static float thin_transmission_roughness(float roughness, float eta) {
+        return clamp(roughness * (0.65f * eta - 0.35f), 0.f, 1.f);
+    }
+
+  private:
+    // The lobes sampling chooses between.
+    enum Lobe { Diffuse, DiffuseTransmission, SpecularReflection, SpecularBSDF, ThinTransmission,
+                Clearcoat, LobeCount };
+    struct LobeProbabilities {
+        float p[LobeCount] = {};
+    };
+    LobeProbabilities lobe_probabilities(Vec3f wo, SampleFlags flags) const;
+    // Sheen and clearcoat are layers on the outside: a solid's inside (wo.z < 0) has neither,
+    // while both faces of a thin surface are outsides.
+    bool coated(Vec3f wo) const { return thin_ || wo.z > 0; }
+    bool lobe_present(int lobe, bool coated) const;
+
+    // The two-sided lobes, evaluated with wo in the upper hemisphere (the caller mirrors both
+    // directions when wo is below): reflection for wi.z > 0, transmission for wi.z < 0.
+    SampledSpectrum upper_f(Vec3f wo, Vec3f wi, bool coated) const;
+    float upper_pdf(Vec3f wo, Vec3f wi, const LobeProbabilities &lobes) const;
+    SampledSpectrum diffuse_f(Vec3f wo, Vec3f wi, bool coated) const;
+    SampledSpectrum specular_reflection_f(Vec3f wo, Vec3f wi) const;
+    SampledSpectrum thin_transmission_f(Vec3f wo, Vec3f wi) const;
+    float clearcoat_f(Vec3f wo, Vec3f wi, bool coated) const;
+    // Fresnel factor of the reflection lobe for cosine cos_d between wo and the microfacet.
+    SampledSpectrum specular_reflectance(float cos_d) const;
+    // Exact dielectric reflectance of each wavelength for cos_d (light from outside).
+    SampledSpectrum dielectric_reflectance(float cos_d) const;
+
+    SampledSpectrum base_color_, sqrt_base_color_, sheen_color_, tinted_f0_, eta_;
+    float metallic_weight_, dielectric_weight_, specular_bsdf_weight_, sheen_weight_;
+    float roughness_, specular_tint_, clearcoat_, clearcoat_alpha_;
+    bool thin_;
+    float diff_trans_, flatness_;
+    TrowbridgeReitzDistribution specular_, thin_transmission_, clearcoat_masking_;
+    DielectricBxDF specular_bsdf_;
+    // Which lobes can be non-zero (from the parameters alone; see lobe_present for the sides).
+    bool present_[LobeCount] = {};
+    bool diffuse_present_ = false, sheen_present_ = false;
+};
+
+} // namespace caustica

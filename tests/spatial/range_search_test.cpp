@@ -1,0 +1,227 @@
+// Both range searches against brute force: the expected neighbours of every query are computed
+// here by testing every point with the documented convention (float squared distance strictly
+// below radius * radius), independently of either structure.
+#include "core/rng.h"
+#include "spatial/range_search.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <thread>
+
+namespace caustica {
+namespace {
+
+std::vector<uint32_t> brute_force(std::span<const Vec3f> points, Vec3f center, float radius) {
+    std::vector<uint32_t> within;
+    for (size_t i = 0; i < points.size(); ++i)
+        if (distance_squared(points[i], center) < radius * radius) within.push_back(uint32_t(i));
+    return within;
+}
+
+std::vector<uint32_t> sorted_query(const RangeSearch &search, Vec3f center, float radius) {
+    // Stale contents must be replaced, not appended to.
+    std::vector<uint32_t> found = {7, 7, 7};
+    search.find_within(center, radius, found);
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
+Vec3f uniform_in_box(Rng &rng, Vec3f lo, Vec3f hi) {
+    return {lerp(rng.uniform(), lo.x, hi.x), lerp(rng.uniform(), lo.y, hi.y),
+            lerp(rng.uniform(), lo.z, hi.z)};
+}
+
+// Queries at random points of the data's bounds grown by the radius (so some balls straddle the
+// border and some miss everything) and at data points themselves, each with the full radius and
+// with a third of it. Returns the total number of neighbours found, so callers can make sure a
+// test is not vacuous.
+size_t expect_matches_brute_force(RangeSearch &search, std::span<const Vec3f> points,
+                                  float max_radius, uint64_t seed) {
+    search.build(points, max_radius);
+    Bounds3f bounds;
+    for (Vec3f p : points) bounds.expand(p);
+    Vec3f margin(max_radius, max_radius, max_radius);
+    Rng rng(seed, 1);
+    size_t found = 0;
+    for (int q = 0; q < 400; ++q) {
+        Vec3f center = q % 2 == 0 ? uniform_in_box(rng, bounds.lo - margin, bounds.hi + margin)
+                                  : points[rng.next_uint32() % points.size()];
+        for (float radius : {max_radius, max_radius / 3}) {
+            std::vector<uint32_t> expected = brute_force(points, center, radius);
+            EXPECT_EQ(sorted_query(search, center, radius), expected)
+                << "query " << q << " at (" << center.x << ", " << center.y << ", " << center.z
+                << ") radius " << radius;
+            found += expected.size();
+        }
+    }
+    return found;
+}
+
+class RangeSearchTest : public testing::TestWithParam<std::string> {
+  protected:
+    std::unique_ptr<RangeSearch> search = create_range_search(GetParam());
+};
+
+TEST_P(RangeSearchTest, UniformCloud) {
+    Rng rng(1, 2);
+    std::vector<Vec3f> points(20000);
+    for (Vec3f &p : points) p = uniform_in_box(rng, {-1, -1, -1}, {1, 1, 1});
+    // 20000 points in a volume of 8: a ball of radius 0.1 holds about 10 on average.
+    EXPECT_GT(expect_matches_brute_force(*search, points, 0.1f, 3), 2000u);
+}
+
+TEST_P(RangeSearchTest, ClusteredCloud) {
+    // Dense clusters (thousands of points per grid cell) over a sparse background.
+    Rng rng(4, 5);
+    std::vector<Vec3f> points;
+    for (int cluster = 0; cluster < 5; ++cluster) {
+        Vec3f c = uniform_in_box(rng, {-10, -10, -10}, {10, 10, 10});
+        for (int i = 0; i < 3000; ++i)
+            points.push_back(c +
+                             uniform_in_box(rng, {-0.02f, -0.02f, -0.02f}, {0.02f, 0.02f, 0.02f}));
+    }
+    for (int i = 0; i < 2000; ++i)
+        points.push_back(uniform_in_box(rng, {-10, -10, -10}, {10, 10, 10}));
+    EXPECT_GT(expect_matches_brute_force(*search, points, 0.05f, 6), 10000u);
+}
+
+TEST_P(RangeSearchTest, PointsOnAPlane) {
+    // Photons on a floor: no extent at all along z.
+    Rng rng(7, 8);
+    std::vector<Vec3f> points(20000);
+    for (Vec3f &p : points) p = uniform_in_box(rng, {-3, -2, 0.5f}, {5, 2, 0.5f});
+    EXPECT_GT(expect_matches_brute_force(*search, points, 0.1f, 9), 2000u);
+}
+
+TEST_P(RangeSearchTest, NegativeAndLargeCoordinates) {
+    // A dense cloud near (-1e5, 1e5, -1e5) plus outliers at the corners of [-1e5, 1e5]^3.
+    Rng rng(10, 11);
+    std::vector<Vec3f> points;
+    for (int i = 0; i < 20000; ++i)
+        points.push_back(
+            uniform_in_box(rng, {-1e5f, 1e5f - 20, -1e5f}, {-1e5f + 20, 1e5f, -1e5f + 20}));
+    for (float x : {-1e5f, 1e5f})
+        for (float y : {-1e5f, 1e5f})
+            for (float z : {-1e5f, 1e5f}) points.push_back({x, y, z});
+    EXPECT_GT(expect_matches_brute_force(*search, points, 1.f, 12), 2000u);
+}
+
+TEST_P(RangeSearchTest, TinyRadiusInHugeScene) {
+    // The radius is far below the float spacing of the outliers' coordinates: the grid must cap
+    // its cell count and still find everything near the origin.
+    Rng rng(13, 14);
+    std::vector<Vec3f> points;
+    for (int i = 0; i < 20000; ++i)
+        points.push_back(uniform_in_box(rng, {-0.01f, -0.01f, -0.01f}, {0.01f, 0.01f, 0.01f}));
+    points.push_back({-1e5f, -1e5f, -1e5f});
+    points.push_back({1e5f, 1e5f, 1e5f});
+    // About 10 neighbours within 1e-3 of a data point; the random queries mostly find nothing.
+    EXPECT_GT(expect_matches_brute_force(*search, points, 1e-3f, 15), 1000u);
+}
+
+TEST_P(RangeSearchTest, PointsExactlyAtTheRadiusAreExcluded) {
+    // Dyadic values keep every coordinate, difference and squared distance exact (or, for the
+    // inner points, rounded to a float still below radius^2), so the expected sets follow from
+    // the geometry: the center and points 2^-20 inside the sphere are found, points exactly on
+    // it are not.
+    Vec3f center(0.25f, -0.5f, 1);
+    float radius = 0.5f;
+    std::vector<Vec3f> points = {center};
+    std::vector<uint32_t> expected = {0};
+    for (int axis = 0; axis < 3; ++axis)
+        for (float sign : {-1.f, 1.f}) {
+            Vec3f on = center, inside = center, outside = center;
+            on[axis] += sign * radius;
+            inside[axis] = on[axis] - sign * 0x1p-20f;
+            outside[axis] += sign * 2 * radius;
+            expected.push_back(uint32_t(points.size() + 1));
+            points.insert(points.end(), {on, inside, outside});
+        }
+    search->build(points, radius);
+    EXPECT_EQ(sorted_query(*search, center, radius), expected);
+    // Radius 0 finds nothing, not even a point at the center.
+    EXPECT_TRUE(sorted_query(*search, center, 0).empty());
+    // Around a point on the sphere: itself and its neighbour 2^-20 inward, nothing else (the
+    // center and the other points are half a radius or more away).
+    EXPECT_EQ(sorted_query(*search, points[1], radius / 4), (std::vector<uint32_t>{1, 2}));
+}
+
+TEST_P(RangeSearchTest, EmptySet) {
+    search->build({}, 1);
+    EXPECT_TRUE(sorted_query(*search, {0, 0, 0}, 1).empty());
+    EXPECT_EQ(search->memory_bytes(), 0u);
+}
+
+TEST_P(RangeSearchTest, IdenticalPoints) {
+    std::vector<Vec3f> points(1000, Vec3f(1, -2, 3));
+    std::vector<uint32_t> all(points.size());
+    for (size_t i = 0; i < all.size(); ++i) all[i] = uint32_t(i);
+    search->build(points, 0.1f);
+    EXPECT_EQ(sorted_query(*search, {1, -2, 3}, 0.1f), all);
+    EXPECT_EQ(sorted_query(*search, {1.05f, -2, 3}, 0.1f), all);
+    EXPECT_TRUE(sorted_query(*search, {1.2f, -2, 3}, 0.1f).empty());
+    // A zero maximum radius is legal and finds nothing.
+    search->build(points, 0);
+    EXPECT_TRUE(sorted_query(*search, {1, -2, 3}, 0).empty());
+}
+
+TEST_P(RangeSearchTest, RepeatedBuildsWithDifferentRadii) {
+    Rng rng(16, 17);
+    std::vector<Vec3f> first(5000), second(12000);
+    for (Vec3f &p : first) p = uniform_in_box(rng, {0, 0, 0}, {1, 1, 1});
+    for (Vec3f &p : second) p = uniform_in_box(rng, {-4, 2, -1}, {-2, 3, 0});
+    EXPECT_GT(expect_matches_brute_force(*search, first, 0.1f, 18), 1000u);
+    EXPECT_GT(expect_matches_brute_force(*search, second, 0.2f, 19), 1000u);
+    EXPECT_GT(expect_matches_brute_force(*search, first, 0.05f, 20), 100u);
+}
+
+TEST_P(RangeSearchTest, RejectsRadiusAboveMaximum) {
+    std::vector<Vec3f> points = {{0, 0, 0}};
+    search->build(points, 0.5f);
+    std::vector<uint32_t> found;
+    EXPECT_THROW(search->find_within({0, 0, 0}, 0.6f, found), std::invalid_argument);
+    EXPECT_THROW(search->find_within({0, 0, 0}, -0.1f, found), std::invalid_argument);
+}
+
+TEST_P(RangeSearchTest, ConcurrentQueriesAgree) {
+    Rng rng(21, 22);
+    std::vector<Vec3f> points(50000);
+    for (Vec3f &p : points) p = uniform_in_box(rng, {-1, -1, -1}, {1, 1, 1});
+    float radius = 0.08f;
+    search->build(points, radius);
+    std::vector<Vec3f> centers(2000);
+    for (Vec3f &c : centers) c = uniform_in_box(rng, {-1, -1, -1}, {1, 1, 1});
+
+    // Every thread runs all queries, starting at a different offset so that different threads
+    // work on different queries at the same moment.
+    constexpr int thread_count = 4;
+    std::vector<std::vector<std::vector<uint32_t>>> results(thread_count);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < thread_count; ++t)
+        threads.emplace_back([&, t] {
+            results[t].resize(centers.size());
+            for (size_t i = 0; i < centers.size(); ++i) {
+                size_t q = (i + t * centers.size() / thread_count) % centers.size();
+                results[t][q] = sorted_query(*search, centers[q], radius);
+            }
+        });
+    for (std::thread &thread : threads) thread.join();
+    for (size_t q = 0; q < centers.size(); ++q) {
+        std::vector<uint32_t> expected = brute_force(points, centers[q], radius);
+        for (int t = 0; t < thread_count; ++t) ASSERT_EQ(results[t][q], expected) << "thread " << t;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Implementations, RangeSearchTest, testing::Values("hashgrid", "flann"),
+                         [](const testing::TestParamInfo<std::string> &info) {
+                             return info.param;
+                         });
+
+TEST(RangeSearch, UnknownNameThrows) {
+    EXPECT_THROW(create_range_search("octree"), std::invalid_argument);
+}
+
+} // namespace
+} // namespace caustica
