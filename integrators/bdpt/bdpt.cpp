@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "integrators/bdpt/mis_weight.h"
 #include "integrators/common/path_vertex.h"
+#include "integrators/common/splat_scale.h"
 #include "integrators/common/tile_renderer.h"
 #include "scene/scene.h"
 
@@ -316,13 +317,9 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     });
 }
 
-// As for the light tracer: one light subpath per pixel sample, and importance normalised over
-// the whole frame, so each splat counts 1 / (light subpaths traced per pixel of the full frame).
-// Counting the subpaths actually traced keeps an interrupted render correctly normalised.
+// One light subpath per pixel sample.
 double BDPT::splat_scale(const Scene &scene, const RenderStats &stats) const {
-    if (stats.pixel_samples == 0) return 0;
-    const Vec2i full = scene.film->resolution();
-    return double(full.x) * full.y / double(stats.pixel_samples);
+    return light_path_splat_scale(scene, stats.pixel_samples);
 }
 
 } // namespace caustica

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "geometry/interaction.h"
 #include "integrators/common/path_vertex.h"
+#include "integrators/common/splat_scale.h"
 #include "integrators/common/tile_renderer.h"
 #include "scene/scene.h"
 
@@ -173,18 +174,9 @@ void LightTracer::render(const Scene &scene, const RenderBudget &budget, RenderS
     });
 }
 
-// The perspective camera's importance integrates to one over the lens and the whole image
-// (full resolution), so a splat summed into a pixel through the filter and divided by its
-// integral (Film::get_image) estimates 1/N_full of that pixel's value per light path. With
-// N_crop light paths per iteration (one per rendered pixel) the factor is
-// N_full / (N_crop * iterations): 1/spp, as in pbrt-v4, when the whole image is rendered.
+// One light path per pixel sample.
 double LightTracer::splat_scale(const Scene &scene, const RenderStats &stats) const {
-    // One light path per pixel sample: divide by the light paths traced per pixel of the full
-    // frame. Counting the paths actually traced (not whole iterations) keeps an interrupted
-    // render, which stops part-way through an iteration, correctly normalised.
-    if (stats.pixel_samples == 0) return 0;
-    const Vec2i full = scene.film->resolution();
-    return double(full.x) * full.y / double(stats.pixel_samples);
+    return light_path_splat_scale(scene, stats.pixel_samples);
 }
 
 } // namespace caustica

@@ -68,13 +68,14 @@ struct PixelState {
 struct StoredPhoton {
     SampledSpectrum beta;
     uint32_t wi;               // octahedral, towards where the photon came from
-    uint32_t side_normal;      // octahedral, see photon_side.h
+    uint32_t normal;           // octahedral geometric normal, see photon_side.h
     bool secondary_terminated;
 };
 
 // Direct lighting and the visible point of one pixel's camera path.
+// lambda is terminated in place if the path crosses dispersion: L is in its measure.
 void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectrum beta,
-                       SampledWavelengths lambda, IterationPixelContext &ctx, SampledSpectrum &L,
+                       SampledWavelengths &lambda, IterationPixelContext &ctx, SampledSpectrum &L,
                        VisiblePoint &vp) {
     bool specular_bounce = false;
     float bsdf_pdf = 0;
@@ -173,7 +174,7 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
         }
         if (depth > 0 && is_non_specular(bsdf.flags())) {
             positions.push_back(si.p);
-            photons.push_back(StoredPhoton{beta, encode_octahedral(si.wo), encode_octahedral(side_normal(si.n, si.wo)),
+            photons.push_back(StoredPhoton{beta, encode_octahedral(si.wo), encode_octahedral(si.n),
                                            lambda.secondary_terminated()});
         }
         float u = sampler.get_1d();
@@ -298,11 +299,10 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 searches[g]->find_within(vp.p, state.radius, near);
                 if (near.empty()) return;
                 SampledSpectrum phi(0.f);
-                const Vec3f gather_side = side_normal(vp.ng, vp.wo);
                 int gathered = 0;
                 for (uint32_t i : near) {
                     const StoredPhoton &photon = group_photons[g][i];
-                    if (!same_surface_side(decode_octahedral(photon.side_normal), gather_side)) continue;
+                    if (!same_surface(decode_octahedral(photon.normal), vp.ng)) continue;
                     ++gathered;
                     const Vec3f wi = decode_octahedral(photon.wi);
                     const float cos_ng = abs_dot(wi, vp.ng);

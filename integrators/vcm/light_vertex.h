@@ -38,9 +38,9 @@ struct Photon {
     std::array<float, NumWavelengths> beta_values;
     float d_vcm, d_vm;
     uint32_t wo;           // octahedral-encoded direction towards the previous vertex
-    // Octahedral-encoded geometric normal on the side the photon arrived from: merging only
-    // gathers photons whose surface faces the camera vertex's way (see photon_side.h).
-    uint32_t side_normal;
+    // Octahedral-encoded geometric normal: merging only gathers photons that lie on a surface
+    // oriented like the camera vertex's (see photon_side.h).
+    uint32_t normal;
     uint16_t path_length;
     uint16_t secondary_terminated;
 

@@ -5,6 +5,7 @@
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/merge_radius.h"
 #include "integrators/common/path_vertex.h"
+#include "integrators/common/splat_scale.h"
 #include "integrators/vcm/light_vertex.h"
 #include "integrators/vcm/vcm_mis.h"
 #include "integrators/common/wavelength_groups.h"
@@ -323,13 +324,12 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
 SampledSpectrum merge(const CameraPathContext &ctx, const CameraVertex &z, const RangeSearch &search,
                       const std::vector<Photon> &photons, std::vector<uint32_t> &found) {
     search.find_within(z.si.p, ctx.it.radius, found);
-    const Vec3f gather_side = side_normal(z.si.n, z.si.wo);
     SampledSpectrum sum(0.f);
     for (uint32_t index : found) {
         const Photon &photon = photons[index];
         // The merged vertex belongs to both subpaths.
         if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) continue;
-        if (!same_surface_side(decode_octahedral(photon.side_normal), gather_side)) continue;
+        if (!same_surface(decode_octahedral(photon.normal), z.si.n)) continue;
         const Vec3f wi = decode_octahedral(photon.wo);
         const float cos_ng = abs_dot(wi, z.si.n);
         if (cos_ng == 0) continue;
@@ -535,7 +535,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                 const LightVertex &v = (*path.vertices)[path.begin + i];
                 photon_positions[g].push_back(v.p);
                 photons[g].push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm, encode_octahedral(v.wo),
-                                            encode_octahedral(side_normal(v.ng, v.wo)), v.path_length,
+                                            encode_octahedral(v.ng), v.path_length,
                                             uint16_t(v.secondary_terminated)});
             }
         }
@@ -563,13 +563,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     });
 }
 
-// Light tracing's normalisation (see LightTracer::splat_scale): one light path per pixel per
-// iteration, counted as traced so that an interrupted iteration stays correctly normalised.
+// One light path per pixel per iteration, counted as traced (an interrupted iteration included).
 double VCM::splat_scale(const Scene &scene, const RenderStats &stats) const {
     (void)stats;
-    if (light_paths_traced_ == 0) return 0;
-    const Vec2i full = scene.film->resolution();
-    return double(full.x) * full.y / double(light_paths_traced_);
+    return light_path_splat_scale(scene, light_paths_traced_);
 }
 
 } // namespace caustica
