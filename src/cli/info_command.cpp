@@ -15,6 +15,8 @@ int run_info(const std::string &scene_path) {
     std::printf("scene:            %s\n", scene_path.c_str());
     std::printf("resolution:       %d x %d\n", res.x, res.y);
     std::printf("integrator:       %s\n", scene->integrator_name.c_str());
+    IntegratorChoice automatic = choose_auto_integrator(f, scene->camera->models_importance());
+    std::printf("auto would use:   %s (%s)\n", automatic.name.c_str(), automatic.reason.c_str());
     std::printf("samples/pixel:    %d\n", scene->sampler->samples_per_pixel());
     std::printf("shapes:           %zu\n", scene->shape_count);
     std::printf("triangles:        %zu\n", scene->triangle_count);
@@ -26,6 +28,7 @@ int run_info(const std::string &scene_path) {
     std::printf("features:\n");
     std::printf("  dispersive materials:      %s\n", yes_no(f.dispersive_materials));
     std::printf("  delta-specular surfaces:   %s\n", yes_no(f.specular_surfaces));
+    std::printf("  caustic paths:             %s\n", yes_no(f.caustic_paths));
     std::printf("  absorbing interiors:       %s\n", yes_no(f.absorbing_interiors));
     std::printf("  participating media:       %s\n", yes_no(f.media));
     std::printf("  subsurface scattering:     %s\n", yes_no(f.subsurface));

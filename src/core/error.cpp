@@ -25,4 +25,10 @@ void warning(const std::string &message) {
     std::fprintf(stderr, "warning: %s\n", message.c_str());
 }
 
+void note(const std::string &message) {
+    if (!warnings_enabled) return;
+    std::lock_guard<std::mutex> lock(warning_mutex);
+    std::fprintf(stderr, "note: %s\n", message.c_str());
+}
+
 } // namespace caustica

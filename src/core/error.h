@@ -36,6 +36,9 @@ class InputError : public std::runtime_error {
 // Prints "file:line:column: warning: message" to stderr (thread-safe, unless warnings are muted).
 void warning(const SourceLocation &loc, const std::string &message);
 void warning(const std::string &message);
+// Prints "note: message" to stderr: information the user asked for implicitly (such as why
+// `--integrator auto` chose an integrator); muted with the warnings.
+void note(const std::string &message);
 // Tests silence warnings; the command line keeps them on.
 void set_warnings_enabled(bool enabled);
 

@@ -36,6 +36,7 @@ class DielectricMaterial final : public Material {
                   ScratchBuffer &scratch) const override;
     bool is_dispersive() const override { return dispersive_; }
     bool has_specular_lobe() const override { return specular_; }
+    bool has_non_specular_lobe() const override { return roughness_.may_be_rough(); }
     SampledSpectrum interior_sigma_a(const SampledWavelengths &lambda) const override {
         return sigma_a_ ? sigma_a_->sample(lambda) : SampledSpectrum();
     }
@@ -56,6 +57,7 @@ class ThinDielectricMaterial final : public Material {
     BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                   ScratchBuffer &scratch) const override;
     bool has_specular_lobe() const override { return true; }
+    bool has_non_specular_lobe() const override { return false; }
 
   private:
     SpectrumPtr eta_;

@@ -20,6 +20,8 @@ class Material {
     virtual bool is_dispersive() const { return false; }
     // Does any of its lobes include a delta (perfectly specular) component?
     virtual bool has_specular_lobe() const { return false; }
+    // Does any of its lobes scatter diffusely or glossily (so it can receive a caustic)?
+    virtual bool has_non_specular_lobe() const { return true; }
     virtual bool has_subsurface() const { return false; }
     // Beer-Lambert absorption coefficient (per unit length) of the material's interior, for
     // dielectrics given sigma_a or a transmittance colour at a distance. Integrators track when a

@@ -27,6 +27,10 @@ struct MicrofacetRoughness {
         if (!u->constant_value() || !v->constant_value()) return true;
         return distribution(TextureEvalContext()).effectively_smooth();
     }
+    bool may_be_rough() const {
+        if (!u->constant_value() || !v->constant_value()) return true;
+        return !distribution(TextureEvalContext()).effectively_smooth();
+    }
 };
 
 } // namespace caustica

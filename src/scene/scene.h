@@ -24,7 +24,10 @@ struct SceneDescription;
 // What the scene contains, derived once so integrators can skip what it does not need.
 struct SceneFeatures {
     bool dispersive_materials = false;   // some dielectric's IOR varies with wavelength
-    bool specular_surfaces = false;      // delta lobes: caustic (S-D-S) paths are possible
+    bool specular_surfaces = false;      // delta lobes
+    // Specular surfaces and non-specular ones that can receive what they focus: caustic
+    // (light - specular - diffuse) paths, which camera paths find only by chance.
+    bool caustic_paths = false;
     bool media = false;
     bool subsurface = false;
     bool visible_emitters = false;       // area or infinite lights the camera can see
@@ -53,6 +56,7 @@ class Scene {
     std::unique_ptr<PowerLightSampler> light_sampler;
 
     std::string integrator_name;         // Caustica's name: "pt", "lt", ...
+    std::string integrator_reason;       // why `auto` chose it (empty when it was named)
     ParameterDictionary integrator_params;
     SourceLocation integrator_location;
     std::string output_filename;         // Film "filename"
@@ -70,6 +74,12 @@ class Scene {
     std::vector<MaterialPtr> materials;
     std::vector<std::shared_ptr<const ShapeGroup>> shape_groups;
 };
+
+// The integrator `--integrator auto` picks for a scene with these features, and why.
+struct IntegratorChoice {
+    std::string name, reason;
+};
+IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool camera_models_importance);
 
 // Maps the pbrt-v4 integrator names onto Caustica's; empty when unknown.
 std::string caustica_integrator_name(const std::string &pbrt_name);

@@ -84,7 +84,7 @@ void check_sample_count(const SceneEntity &sampler, const RenderOverrides &ov) {
 }
 
 // Integrators this build can run; the others arrive with the bidirectional work.
-const std::set<std::string> available_integrators = {"bdpt", "bpm", "lt", "pt", "vcm"};
+const std::set<std::string> available_integrators = {"bdpt", "bpm", "lt", "pt", "sppm", "vcm"};
 
 std::string available_integrator_list() {
     std::string list;
@@ -103,17 +103,26 @@ void choose_integrator(const SceneDescription &d, const RenderOverrides &ov, Sce
     scene.integrator_params = d.integrator.params;
     scene.integrator_location = d.integrator.loc;
     if (!ov.integrator.empty()) {
+        if (ov.integrator == "auto") {
+            scene.integrator_name = "auto";
+            return;
+        }
         std::string name = caustica_integrator_name(ov.integrator);
         if (name.empty() || !available_integrators.count(name))
             throw InputError("--integrator: \"" + ov.integrator + "\" is not an available integrator (available: " +
-                             available_integrator_list() + ")");
+                             available_integrator_list() + ", auto)");
         scene.integrator_name = name;
         return;
     }
-    std::string pbrt_name = d.integrator.type.empty() ? "volpath" : d.integrator.type;
-    std::string name = caustica_integrator_name(pbrt_name);
+    // A scene without an Integrator directive gets the automatic choice (pbrt-v4 would use
+    // volpath); one that names an integrator gets it.
+    if (d.integrator.type.empty()) {
+        scene.integrator_name = "auto";
+        return;
+    }
+    std::string name = caustica_integrator_name(d.integrator.type);
     if (name.empty() || !available_integrators.count(name)) {
-        warning(d.integrator.loc, "integrator \"" + pbrt_name +
+        warning(d.integrator.loc, "integrator \"" + d.integrator.type +
                                       "\" is not supported yet; rendering with the path tracer (pt)");
         name = "pt";
     }
@@ -243,9 +252,25 @@ void analyse_features(const SceneDescription &d, Scene &scene) {
     }
     f.media = !d.media.empty();
     f.visible_emitters = !scene.lights.empty();
+    bool non_specular_surfaces = false;
+    for (const MaterialPtr &m : scene.materials) non_specular_surfaces |= m->has_non_specular_lobe();
+    f.caustic_paths = f.specular_surfaces && non_specular_surfaces && !scene.lights.empty();
 }
 
 } // namespace
+
+IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool camera_models_importance) {
+    if (!features.caustic_paths)
+        return {"pt", "no specular surface can focus light onto a diffuse one, so camera paths with "
+                      "light sampling find every path; path tracing is the cheapest per sample"};
+    if (!camera_models_importance)
+        return {"pt", "the scene has caustic paths, but its camera (orthographic) cannot receive "
+                      "light paths"};
+    return {"vcm", std::string("specular surfaces focus light onto diffuse ones (caustics") +
+                       (features.dispersive_materials ? ", with dispersion" : "") +
+                       "), which camera paths find only by chance; vertex connection and merging "
+                       "adds light paths and photon merging"};
+}
 
 std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverrides &ov) {
     auto scene = std::make_unique<Scene>();
@@ -287,6 +312,12 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     for (const LightPtr &light : scene->lights) light->preprocess(bounds);
     scene->light_sampler = std::make_unique<PowerLightSampler>(scene->lights);
     analyse_features(d, *scene);
+    if (scene->integrator_name == "auto") {
+        IntegratorChoice choice = choose_auto_integrator(scene->features, scene->camera->models_importance());
+        scene->integrator_name = choice.name;
+        scene->integrator_reason = choice.reason;
+        note("--integrator auto chose " + choice.name + ": " + choice.reason);
+    }
     return scene;
 }
 
