@@ -4,8 +4,10 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace caustica {
 
@@ -18,8 +20,19 @@ struct RenderBudget {
     // Set asynchronously (by a signal handler) to stop the render as soon as possible; what was
     // accumulated stays in the film, correctly normalised.
     const std::atomic<bool> *cancel = nullptr;
+    // Called on the rendering thread whenever the film and the integrator's state hold exactly
+    // the samples the RenderStats count, which are then up to date: at every boundary between
+    // sweeps of samples (photon mapping: between iterations), and when the render stops on
+    // `cancel` if it can stop in such a state. Camera-sample renderers (pt, lt, bdpt) always can,
+    // recording each pixel's own count in RenderStats::pixel_sample_counts; photon mapping can
+    // when the interrupted iteration left no trace. These are the moments a checkpoint can be
+    // taken (cli/checkpoint.h); the callback may be called twice for the same state.
+    std::function<void()> at_boundary;
 };
 
+// What a render has done. A render continues from the stats it is given: a fresh RenderStats
+// starts from nothing, while a render resumed from a checkpoint passes the saved stats, whose
+// samples its film and integrator state already hold.
 struct RenderStats {
     std::atomic<uint64_t> rays{0};              // camera, bounce and shadow rays traced
     std::atomic<uint64_t> non_finite_samples{0};// caught, counted and dropped
@@ -27,6 +40,10 @@ struct RenderStats {
     // Pixel samples actually taken, over the film's pixel bounds: differs from
     // samples_per_pixel * pixels when a render is interrupted part-way through a sweep.
     std::atomic<uint64_t> pixel_samples{0};
+    // After an interruption part-way through a sweep of camera samples (pt, lt, bdpt): the
+    // samples each pixel of the film's bounds has taken, row by row (each at least
+    // samples_per_pixel). Empty when every pixel has taken samples_per_pixel.
+    std::vector<int> pixel_sample_counts;
     bool interrupted = false;
     double seconds = 0;
 };
@@ -37,7 +54,8 @@ using ProgressCallback = std::function<void(double fraction, uint64_t samples)>;
 class Integrator {
   public:
     virtual ~Integrator() = default;
-    // Renders into scene.film. Deterministic for a seed and sample count, whatever the threads.
+    // Renders into scene.film, continuing from `stats` (see RenderStats). Deterministic for a
+    // seed and sample count, whatever the threads, and whether or not it was resumed.
     virtual void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                         const ProgressCallback &progress) = 0;
     // The factor the film's splats are scaled by when the image is made (Film::get_image) after
@@ -47,6 +65,12 @@ class Integrator {
         (void)stats;
         return 1;
     }
+    // Checkpoints: what the integrator carries from one iteration to the next beyond the film
+    // and the RenderStats, written at a boundary (RenderBudget::at_boundary) and read back
+    // before a resumed render() of the same scene. Most integrators carry nothing.
+    // restore_state throws std::runtime_error if the data does not fit.
+    virtual void save_state(std::ostream &out) const { (void)out; }
+    virtual void restore_state(std::istream &in) { (void)in; }
 };
 
 // Creates the integrator named by scene.integrator_name; throws InputError for unknown names.

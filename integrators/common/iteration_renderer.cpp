@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <utility>
 #include <vector>
 
 namespace caustica {
@@ -43,7 +44,7 @@ struct IterationRenderer::Threads {
 IterationRenderer::IterationRenderer(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                                      const ProgressCallback &progress)
     : scene_(scene), budget_(budget), stats_(stats), progress_(progress),
-      start_(std::chrono::steady_clock::now()), threads_(std::make_unique<Threads>(scene)) {
+      start_(std::chrono::steady_clock::now()), seconds_before_(stats.seconds), threads_(std::make_unique<Threads>(scene)) {
     const PixelBounds &bounds = scene.film->pixel_bounds();
     pixel_count_ = size_t(bounds.width()) * bounds.height();
     for (int y = bounds.min.y; y < bounds.max.y; y += kTileSize)
@@ -52,11 +53,14 @@ IterationRenderer::IterationRenderer(const Scene &scene, const RenderBudget &bud
                 {{x, y}, {std::min(x + kTileSize, bounds.max.x), std::min(y + kTileSize, bounds.max.y)}});
 }
 
-IterationRenderer::~IterationRenderer() {
+IterationRenderer::~IterationRenderer() { flush_counters(); }
+
+void IterationRenderer::flush_counters() {
     for (ThreadState &ts : threads_->states) {
-        stats_.rays += ts.rays;
-        stats_.non_finite_samples += ts.non_finite;
+        stats_.rays += std::exchange(ts.rays, 0);
+        stats_.non_finite_samples += std::exchange(ts.non_finite, 0);
     }
+    stats_.seconds = elapsed();
 }
 
 bool IterationRenderer::cancelled() const {
@@ -64,25 +68,32 @@ bool IterationRenderer::cancelled() const {
 }
 
 double IterationRenderer::elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return seconds_before_ + std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
 void IterationRenderer::run(const std::function<bool(int)> &iteration) {
     const bool timed = budget_.seconds > 0;
     const int cap = budget_.spp > 0 ? budget_.spp : (timed ? INT_MAX : 1);
-    int done = 0;
+    int done = stats_.samples_per_pixel;
     while (done < cap) {
         // With a time limit, an iteration is only started if it is expected to finish in time
         // (its cost estimated from the iterations so far); the first one always runs.
         if (timed && done > 0 && elapsed() + elapsed() / done > budget_.seconds) break;
         const bool completed = iteration(done);
         for (ThreadState &ts : threads_->states) ts.iteration_scratch->reset();
-        if (!completed || cancelled()) {
+        if (!completed) {
             stats_.interrupted = true;
             break;
         }
         ++done;
         stats_.pixel_samples += pixel_count_;
+        stats_.samples_per_pixel = done;
+        flush_counters();
+        if (budget_.at_boundary) budget_.at_boundary();
+        if (cancelled()) {
+            stats_.interrupted = true;
+            break;
+        }
         if (progress_)
             progress_(timed ? std::min(1.0, elapsed() / budget_.seconds) : double(done) / cap,
                       uint64_t(done) * pixel_count_);

@@ -40,9 +40,11 @@ class IterationRenderer {
                       const ProgressCallback &progress);
     ~IterationRenderer();
 
-    // Calls iteration(i) for i = 0, 1, ... until the budget's iteration count or time is used
-    // up or the render is cancelled; iteration() returns false when it was cancelled part-way.
-    // Fills in stats.samples_per_pixel (completed iterations), seconds and interrupted.
+    // Calls iteration(i) for i = n, n + 1, ... from the n iterations the stats count as done
+    // (0, or those of a resumed render) until the budget's iteration count or time is used up
+    // or the render is cancelled; iteration() returns false when it was cancelled part-way.
+    // Fills in stats.samples_per_pixel (completed iterations), pixel_samples, seconds and
+    // interrupted, and calls the budget's at_boundary after every completed iteration.
     void run(const std::function<bool(int iteration)> &iteration);
 
     // One parallel pass: work(pixel, index, ctx) for every pixel of the film's bounds, with the
@@ -60,6 +62,8 @@ class IterationRenderer {
     struct ThreadState;
     bool cancelled() const;
     double elapsed() const;
+    // Adds the threads' counters to the stats and brings their time up to date.
+    void flush_counters();
 
     const Scene &scene_;
     const RenderBudget &budget_;
@@ -67,6 +71,7 @@ class IterationRenderer {
     const ProgressCallback &progress_;
     size_t pixel_count_;
     std::chrono::steady_clock::time_point start_;
+    double seconds_before_; // of the render this one resumes
     struct Threads;
     std::unique_ptr<Threads> threads_;
 };

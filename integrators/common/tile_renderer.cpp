@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <utility>
 #include <vector>
 
 namespace caustica {
@@ -49,25 +50,44 @@ std::vector<Tile> make_tiles(const PixelBounds &bounds) {
 void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                            const ProgressCallback &progress, const PixelSampleFunction &work) {
     const Film &film = *scene.film;
-    const std::vector<Tile> tiles = make_tiles(film.pixel_bounds());
-    const uint64_t pixel_count = uint64_t(film.pixel_bounds().width()) * film.pixel_bounds().height();
+    const PixelBounds &bounds = film.pixel_bounds();
+    const std::vector<Tile> tiles = make_tiles(bounds);
+    const uint64_t pixel_count = uint64_t(bounds.width()) * bounds.height();
     const bool timed = budget.seconds > 0;
     const int spp_cap = budget.spp > 0 ? budget.spp : (timed ? INT_MAX : 1);
     const auto start = std::chrono::steady_clock::now();
+    const double seconds_before = stats.seconds; // of the render this one resumes
     auto elapsed = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
+
+    // The samples each pixel has taken. A pixel's value only depends on its own samples, taken
+    // in index order, and splats are summed order-independently, so the sweeps below may be cut
+    // anywhere: a render resumed from per-pixel counts (an interrupted sweep) gives the same
+    // image as one that was never stopped.
+    std::vector<int> taken = std::move(stats.pixel_sample_counts);
+    stats.pixel_sample_counts.clear();
+    if (taken.size() != pixel_count) taken.assign(pixel_count, stats.samples_per_pixel);
 
     tbb::enumerable_thread_specific<ThreadState> states([&] {
         ThreadState s;
         s.sampler = scene.sampler->clone();
         return s;
     });
+    // Brings the stats up to date (for RenderBudget::at_boundary and at the end).
+    auto flush_counters = [&] {
+        for (ThreadState &ts : states) {
+            stats.rays += std::exchange(ts.rays, 0);
+            stats.non_finite_samples += std::exchange(ts.non_finite, 0);
+            stats.pixel_samples += std::exchange(ts.pixel_samples, 0);
+        }
+        stats.seconds = elapsed();
+    };
 
     auto cancelled = [&] { return budget.cancel && budget.cancel->load(std::memory_order_relaxed); };
     std::atomic<uint64_t> tiles_done{0};
-    int done = 0;
-    while (done < spp_cap) {
+    int done = stats.samples_per_pixel;
+    while (done < spp_cap && !(timed && elapsed() >= budget.seconds)) {
         // Sweeps over the image in waves of doubling size (1, 1, 2, 4, ... 64 samples per
         // pixel), so that an interrupted render holds the whole image at a lower sample count;
         // a time budget sizes its waves from the measured cost per sample instead, so the
@@ -79,7 +99,7 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
             wave = done == 0 ? 1 : int(std::clamp(remaining / std::max(per_spp, 1e-9), 1.0, 64.0));
             wave = std::min(wave, spp_cap - done);
         }
-        const int first = done;
+        const int first = done, end = done + wave;
         tiles_done = 0;
         tbb::parallel_for(size_t(0), tiles.size(), [&](size_t t) {
             ThreadState &ts = states.local();
@@ -88,7 +108,8 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
             for (int y = tile.lo.y; y < tile.hi.y; ++y)
                 for (int x = tile.lo.x; x < tile.hi.x; ++x) {
                     Vec2i pixel{x, y};
-                    for (int s = first; s < first + wave; ++s) {
+                    int &pixel_taken = taken[size_t(y - bounds.min.y) * bounds.width() + (x - bounds.min.x)];
+                    for (int s = std::max(first, pixel_taken); s < end; ++s) {
                         // Checked per sample so an interruption is honoured within one sample's
                         // time; the film normalises each pixel by its own weight, so pixels with
                         // fewer samples are still correct.
@@ -97,6 +118,7 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
                         work(pixel, s, ctx);
                         ts.scratch->reset();
                         ++ts.pixel_samples;
+                        pixel_taken = s + 1;
                     }
                 }
             uint64_t n = ++tiles_done;
@@ -105,20 +127,23 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
                                : (double(first) + double(wave) * n / tiles.size()) / spp_cap,
                          uint64_t(double(pixel_count) * (first + double(wave) * n / tiles.size())));
         });
-        if (cancelled()) {
+        // Cancellation is only checked before a sample, so a wave may be complete even when
+        // the render was cancelled.
+        const bool stopped = cancelled();
+        const bool complete = !stopped || std::all_of(taken.begin(), taken.end(), [end](int n) { return n >= end; });
+        if (complete) done = end;
+        flush_counters();
+        stats.samples_per_pixel = done;
+        if (stopped) {
             stats.interrupted = true;
+            if (!complete) stats.pixel_sample_counts = taken;
+            if (budget.at_boundary) budget.at_boundary();
             break;
         }
-        done += wave;
-        if (timed && elapsed() >= budget.seconds) break;
+        if (budget.at_boundary) budget.at_boundary();
     }
-    for (ThreadState &ts : states) {
-        stats.rays += ts.rays;
-        stats.non_finite_samples += ts.non_finite;
-        stats.pixel_samples += ts.pixel_samples;
-    }
+    flush_counters();
     stats.samples_per_pixel = done;
-    stats.seconds = elapsed();
 }
 
 void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &stats,

@@ -1,6 +1,7 @@
 // Renders camera samples over the image in parallel tiles (oneTBB). Every sample's random numbers
 // depend only on (pixel, sample index, seed), and every pixel belongs to exactly one tile, so the
-// image is bit-identical whatever the number of threads.
+// image is bit-identical whatever the number of threads, and whether or not the render was
+// interrupted and resumed from a checkpoint.
 #pragma once
 
 #include "core/scratch_buffer.h"
@@ -34,9 +35,11 @@ struct PixelSampleContext {
 using PixelSampleFunction = std::function<void(Vec2i pixel, int sample_index, PixelSampleContext &ctx)>;
 
 // Calls work(pixel, s) for every pixel of the film's pixel bounds and s = 0, 1, ... up to the
-// budget's sample count (or until its time is used), tile by tile in parallel. Fills in
-// stats.rays, non_finite_samples, samples_per_pixel (the samples completed for every pixel) and
-// seconds, and reports progress after each tile.
+// budget's sample count (or until its time is used), tile by tile in parallel, skipping the
+// samples `stats` says were taken (a resumed render). Fills in stats.rays, non_finite_samples,
+// pixel_samples, samples_per_pixel (the samples completed for every pixel), pixel_sample_counts
+// (when interrupted) and seconds, reports progress after each tile and calls the budget's
+// at_boundary after every wave and when interrupted.
 void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                            const ProgressCallback &progress, const PixelSampleFunction &work);
 

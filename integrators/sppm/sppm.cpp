@@ -17,13 +17,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <istream>
+#include <ostream>
+#include <stdexcept>
 
 namespace caustica {
 
 SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
     : max_depth_(params.get_one_int("maxdepth", 5)), initial_radius_(params.get_one_float("radius", 0)),
       photons_per_iteration_(params.get_one_int("photonsperiteration", -1)),
-      wavelength_groups_(params.get_one_int("wavelengthgroups", 4)),
+      wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
       seed_(uint64_t(params.get_one_int("seed", 0)) + scene.overrides.seed),
       photon_search_(params.get_one_string("photonsearch", "hashgrid")) {
     if (max_depth_ < 0)
@@ -55,12 +58,8 @@ struct VisiblePoint {
     SampledWavelengths lambda; // the path's wavelengths (terminated if it crossed dispersion)
 };
 
+// A pixel's camera path this iteration (its estimate is in SPPM::estimates_).
 struct PixelState {
-    float radius = 0;
-    RGB direct_sum;            // direct lighting along camera paths, summed over iterations
-    float photons = 0;         // N: photons the estimate is made of
-    RGB tau;                   // accumulated, radius-scaled flux
-    // This iteration:
     RGB direct;
     VisiblePoint vp;
 };
@@ -203,7 +202,10 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     Film &film = *scene.film;
     const PixelBounds &bounds = film.pixel_bounds();
     std::vector<PixelState> pixels(size_t(bounds.width()) * bounds.height());
-    for (PixelState &state : pixels) state.radius = initial_radius_;
+    // A resumed render continues from the restored estimates.
+    if (stats.samples_per_pixel == 0) estimates_.assign(pixels.size(), PixelEstimate{initial_radius_});
+    if (estimates_.size() != pixels.size())
+        throw std::runtime_error("sppm: resumed without the estimates of the pixels");
     const size_t photon_count = photons_per_iteration_ > 0 ? size_t(photons_per_iteration_) : pixels.size();
     WavelengthGroups groups(wavelength_groups_, seed_);
     std::vector<std::unique_ptr<RangeSearch>> searches;
@@ -283,20 +285,21 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 }
             }
             float max_radius = 0;
-            for (const PixelState &state : pixels) max_radius = std::max(max_radius, state.radius);
+            for (const PixelEstimate &estimate : estimates_) max_radius = std::max(max_radius, estimate.radius);
             for (int g = 0; g < groups.count(); ++g) searches[g]->build(group_positions[g], max_radius);
 
             // Gather pass: each visible point's photons, then the progressive update. It traces
             // no rays and is not interrupted, so that every pixel's statistics describe the same
             // number of completed iterations.
             tbb::parallel_for(size_t(0), pixels.size(), [&](size_t index) {
-                PixelState &state = pixels[index];
-                state.direct_sum += state.direct;
+                const PixelState &state = pixels[index];
+                PixelEstimate &estimate = estimates_[index];
+                estimate.direct_sum += state.direct;
                 const VisiblePoint &vp = state.vp;
                 if (!vp.bsdf) return;
                 const int g = groups.group_of_pixel(index);
                 std::vector<uint32_t> &near = found.local();
-                searches[g]->find_within(vp.p, state.radius, near);
+                searches[g]->find_within(vp.p, estimate.radius, near);
                 if (near.empty()) return;
                 SampledSpectrum phi(0.f);
                 int gathered = 0;
@@ -328,16 +331,19 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 RGB phi_rgb = film.sensor_value(flux, vp.lambda) * group_scale;
                 if (gathered == 0) return;
                 const float m = float(gathered);
-                const float n_new = state.photons + kGamma * m;
-                const float r_new = state.radius * std::sqrt(n_new / (state.photons + m));
-                state.tau = (state.tau + phi_rgb) * sqr(r_new / state.radius);
-                state.photons = n_new;
-                state.radius = r_new;
+                const float n_new = estimate.photons + kGamma * m;
+                const float r_new = estimate.radius * std::sqrt(n_new / (estimate.photons + m));
+                estimate.tau = (estimate.tau + phi_rgb) * sqr(r_new / estimate.radius);
+                estimate.photons = n_new;
+                estimate.radius = r_new;
             });
             return true;
         });
         iterations = stats.samples_per_pixel;
     }
+    // An interrupted iteration changed no estimate (the gather pass is not interrupted) and
+    // the film is only written below, so the state is still that of the completed iterations.
+    if (stats.interrupted && budget.at_boundary) budget.at_boundary();
 
     // The image: direct lighting averaged over the iterations, plus the photon estimate
     // tau / (N_emitted pi r^2).
@@ -346,11 +352,26 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     size_t index = 0;
     for (int y = bounds.min.y; y < bounds.max.y; ++y)
         for (int x = bounds.min.x; x < bounds.max.x; ++x, ++index) {
-            const PixelState &state = pixels[index];
-            RGB value = state.direct_sum / float(iterations) +
-                        state.tau / float(emitted * Pi * sqr(state.radius));
+            const PixelEstimate &estimate = estimates_[index];
+            RGB value = estimate.direct_sum / float(iterations) +
+                        estimate.tau / float(emitted * Pi * sqr(estimate.radius));
             film.add_sensor_value({x, y}, value, 1);
         }
+}
+
+void SPPM::save_state(std::ostream &out) const {
+    const uint64_t count = estimates_.size();
+    out.write(reinterpret_cast<const char *>(&count), sizeof count);
+    out.write(reinterpret_cast<const char *>(estimates_.data()), std::streamsize(count * sizeof(PixelEstimate)));
+}
+
+void SPPM::restore_state(std::istream &in) {
+    uint64_t count = 0;
+    in.read(reinterpret_cast<char *>(&count), sizeof count);
+    if (!in || count > (uint64_t(1) << 32)) throw std::runtime_error("sppm: damaged pixel estimates");
+    estimates_.resize(count);
+    in.read(reinterpret_cast<char *>(estimates_.data()), std::streamsize(count * sizeof(PixelEstimate)));
+    if (!in) throw std::runtime_error("sppm: damaged pixel estimates");
 }
 
 } // namespace caustica

@@ -18,8 +18,10 @@
 
 #include "integrators/integrator.h"
 #include "params/parameters.h"
+#include "spectral/color.h"
 
 #include <string>
+#include <vector>
 
 namespace caustica {
 
@@ -27,19 +29,31 @@ class SPPM final : public Integrator {
   public:
     // Parameters (pbrt-v4 names): "maxdepth" (5), "radius" (the initial gather radius in
     // scene units; 0 or absent: default_merge_radius(), not pbrt's fixed 1), "photonsperiteration" (-1: one per pixel), "seed" (0, added to the
-    // command line's); Caustica's "wavelengthgroups" (4) and "photonsearch" ("hashgrid" or
+    // command line's); Caustica's "wavelengthgroups" (16) and "photonsearch" ("hashgrid" or
     // "flann"). "regularize" is not supported (reported as unused).
     SPPM(const ParameterDictionary &params, const Scene &scene);
     void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                 const ProgressCallback &progress) override;
+    // The pixels' progressive estimates (checkpoints).
+    void save_state(std::ostream &out) const override;
+    void restore_state(std::istream &in) override;
 
   private:
+    // What a pixel's estimate carries from one iteration to the next.
+    struct PixelEstimate {
+        float radius = 0;
+        float photons = 0; // N: photons the estimate is made of
+        RGB direct_sum;    // direct lighting along camera paths, summed over iterations
+        RGB tau;           // accumulated, radius-scaled flux
+    };
+
     int max_depth_;
     float initial_radius_;
     long long photons_per_iteration_;
     int wavelength_groups_;
     uint64_t seed_;
     std::string photon_search_;
+    std::vector<PixelEstimate> estimates_; // row by row over the film's pixel bounds
 };
 
 } // namespace caustica

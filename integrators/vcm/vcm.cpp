@@ -22,7 +22,7 @@ namespace caustica {
 VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
     : mode_(mode), max_depth_(params.get_one_int("maxdepth", 5)),
       base_radius_(params.get_one_float("radius", 0)), alpha_(params.get_one_float("alpha", 0.75f)),
-      wavelength_groups_(params.get_one_int("wavelengthgroups", 4)),
+      wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
       photon_search_(params.get_one_string("photonsearch", "hashgrid")) {
     const char *name = mode == Mode::VertexConnectionMerging ? "vcm" : "bpm";
     if (max_depth_ < 0)
@@ -494,8 +494,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     tbb::enumerable_thread_specific<std::vector<LightVertex>> light_vertices;
     tbb::enumerable_thread_specific<std::vector<uint32_t>> found;
     std::vector<StoredPath> light_paths(pixel_count);
-    light_paths_traced_ = 0;
-    std::atomic<uint64_t> traced{0};
+    // One light path per pixel per completed iteration: a resumed render counts those of the
+    // iterations it continues from.
+    light_paths_traced_ = stats.pixel_samples;
+    std::atomic<uint64_t> traced{light_paths_traced_};
 
     renderer.run([&](int iteration) {
         groups.start_iteration(scene, iteration, pixel_count, pixel_count);

@@ -31,7 +31,7 @@ class VCM final : public Integrator {
 
     // Parameters: "maxdepth" (5), the most scattering events of a path; "radius" (0:
     // default_merge_radius()), the initial merge radius r_0 in scene units;
-    // "alpha" (0.75), the radius reduction exponent; "wavelengthgroups" (4), the wavelength
+    // "alpha" (0.75), the radius reduction exponent; "wavelengthgroups" (16), the wavelength
     // groups per iteration; "photonsearch" ("hashgrid" or "flann"), the range search.
     VCM(Mode mode, const ParameterDictionary &params, const Scene &scene);
     void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
