@@ -53,6 +53,7 @@ constexpr float kGamma = 2.f / 3.f;
 
 struct VisiblePoint {
     Vec3f p, ng, ns, wo;
+    int depth = 0;             // scattering vertices on the camera path before this one
     BSDF bsdf;                 // in the iteration's scratch memory; null: no visible point
     SampledSpectrum beta;      // camera path throughput up to the point
     SampledWavelengths lambda; // the path's wavelengths (terminated if it crossed dispersion)
@@ -68,6 +69,7 @@ struct StoredPhoton {
     SampledSpectrum beta;
     uint32_t wi;               // octahedral, towards where the photon came from
     uint32_t normal;           // octahedral geometric normal, see photon_side.h
+    uint16_t depth;            // scattering vertices on the light path before this one
     bool secondary_terminated;
 };
 
@@ -122,7 +124,7 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
                                                visible_point ? DirectLighting::LightSamplingOnly
                                                              : DirectLighting::WeightedAgainstBsdfSampling);
         if (visible_point) {
-            vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, bsdf, beta, lambda};
+            vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, depth, bsdf, beta, lambda};
             return;
         }
         float u = sampler.get_1d();
@@ -174,7 +176,7 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
         if (depth > 0 && is_non_specular(bsdf.flags())) {
             positions.push_back(si.p);
             photons.push_back(StoredPhoton{beta, encode_octahedral(si.wo), encode_octahedral(si.n),
-                                           lambda.secondary_terminated()});
+                                           uint16_t(depth), lambda.secondary_terminated()});
         }
         float u = sampler.get_1d();
         auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
@@ -203,7 +205,11 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     const PixelBounds &bounds = film.pixel_bounds();
     std::vector<PixelState> pixels(size_t(bounds.width()) * bounds.height());
     // A resumed render continues from the restored estimates.
-    if (stats.samples_per_pixel == 0) estimates_.assign(pixels.size(), PixelEstimate{initial_radius_});
+    if (stats.samples_per_pixel == 0) {
+        PixelEstimate initial;
+        initial.radius = initial_radius_;
+        estimates_.assign(pixels.size(), initial);
+    }
     if (estimates_.size() != pixels.size())
         throw std::runtime_error("sppm: resumed without the estimates of the pixels");
     const size_t photon_count = photons_per_iteration_ > 0 ? size_t(photons_per_iteration_) : pixels.size();
@@ -305,6 +311,9 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 int gathered = 0;
                 for (uint32_t i : near) {
                     const StoredPhoton &photon = group_photons[g][i];
+                    // "maxdepth" bounds the scattering vertices of the whole path, as for the
+                    // other integrators (pbrt-v4 bounds each subpath separately instead).
+                    if (photon.depth + 1 + vp.depth > max_depth_) continue;
                     if (!same_surface(decode_octahedral(photon.normal), vp.ng)) continue;
                     ++gathered;
                     const Vec3f wi = decode_octahedral(photon.wi);

@@ -27,7 +27,8 @@ namespace caustica {
 
 class SPPM final : public Integrator {
   public:
-    // Parameters (pbrt-v4 names): "maxdepth" (5), "radius" (the initial gather radius in
+    // Parameters (pbrt-v4 names): "maxdepth" (5; it bounds the scattering events of the whole
+    // path, camera and photon parts together, like every other integrator here), "radius" (the initial gather radius in
     // scene units; 0 or absent: default_merge_radius(), not pbrt's fixed 1), "photonsperiteration" (-1: one per pixel), "seed" (0, added to the
     // command line's); Caustica's "wavelengthgroups" (16) and "photonsearch" ("hashgrid" or
     // "flann"). "regularize" is not supported (reported as unused).

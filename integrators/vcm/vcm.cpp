@@ -443,7 +443,8 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
             }
             if (it.use_vm && search) L += beta * merge(ctx, z, *search, photons, found);
         }
-        if (path_length >= it.max_depth) break;
+        // Scattering on from vertex max_depth can still reach an emitter (a path of max_depth
+        // scattering events, as the path tracer counts them); the next vertex ends the path.
 
         float u = sampler.get_1d();
         auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
