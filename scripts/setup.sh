@@ -8,6 +8,8 @@ packages=(
   libembree-dev libtbb-dev libopenexr-dev libopenimageio-dev libflann-dev
   libassimp-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev
+  chromium
 )
 
 missing=()

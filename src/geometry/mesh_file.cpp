@@ -1,5 +1,7 @@
 #include "geometry/mesh_file.h"
 
+#include "geometry/ply_header.h"
+
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -44,11 +46,13 @@ MeshData read_mesh_file(const std::string &path, const SourceLocation &loc) {
     ScenePtr scene;
     if (ends_with(path, ".gz")) {
         std::vector<char> data = read_gzip(path, loc);
+        check_ply_element_counts(std::string_view(data.data(), data.size()), data.size(), path, loc);
         std::string inner = path.substr(0, path.size() - 3);
         std::string hint = std::filesystem::path(inner).extension().string();
         if (!hint.empty()) hint = hint.substr(1);
         scene.reset(aiImportFileFromMemory(data.data(), unsigned(data.size()), flags, hint.c_str()));
     } else {
+        check_ply_file_element_counts(path, loc);
         scene.reset(aiImportFile(path.c_str(), flags));
     }
     if (!scene) throw InputError(loc, "cannot read mesh file \"" + path + "\": " + aiGetErrorString());

@@ -5,7 +5,6 @@
 #include "geometry/mesh_file.h"
 #include "geometry/sphere.h"
 
-#include <filesystem>
 
 namespace caustica {
 
@@ -85,13 +84,11 @@ std::shared_ptr<ShapeGroup> create_ply_mesh(const Transform &render_from_object,
                                             const SourceLocation &loc) {
     std::string filename = params.get_one_string("filename", "");
     if (filename.empty()) throw InputError(loc, "plymesh: no \"filename\" given");
-    std::filesystem::path path(filename);
-    if (path.is_relative() && !params.base_directory().empty())
-        path = std::filesystem::path(params.base_directory()) / path;
+    std::string path = params.file_path("filename", filename);
     if (params.has("displacement"))
         warning(params.location("displacement"),
                 "plymesh: displacement mapping is not supported; rendering the mesh undisplaced");
-    MeshData data = read_mesh_file(path.string(), params.location("filename"));
+    MeshData data = read_mesh_file(path, params.location("filename"));
     return mesh_group("plymesh", std::move(data), render_from_object, reverse_orientation,
                       params.location("filename"), "plymesh \"" + filename + "\"");
 }

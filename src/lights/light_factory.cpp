@@ -10,15 +10,37 @@
 #include "lights/uniform_infinite_light.h"
 #include "spectral/color_space.h"
 
-#include <filesystem>
 
 namespace caustica {
 
 namespace {
 
+// Emission must not be negative anywhere: a negative spectrum or scale would give the light a
+// negative power, which the power-proportional light sampler cannot sample, and radiance that
+// subtracts light. (RGB and blackbody emission cannot be negative; inline spectra and
+// constants can.)
+SpectrumPtr checked_emission(const ParameterDictionary &params, const std::string &name,
+                             SpectrumPtr s) {
+    if (!s) return s;
+    for (int lambda = int(LambdaMin); lambda <= int(LambdaMax); ++lambda)
+        if (!((*s)(float(lambda)) >= 0))
+            throw InputError(params.location(name), "\"" + name + "\": emission must not be "
+                             "negative (it is " + std::to_string((*s)(float(lambda))) + " at " +
+                             std::to_string(lambda) + " nm)");
+    return s;
+}
+
+float read_scale(const ParameterDictionary &params) {
+    float scale = params.get_one_float("scale", 1);
+    if (!(scale >= 0))
+        throw InputError(params.location("scale"), "\"scale\" must not be negative");
+    return scale;
+}
+
 // The light's spectrum, or the colour space's illuminant (pbrt-v4's default for every light).
 SpectrumPtr light_spectrum(const ParameterDictionary &params, const std::string &name) {
-    SpectrumPtr s = params.get_one_spectrum(name, nullptr, SpectrumType::Illuminant);
+    SpectrumPtr s = checked_emission(params, name,
+                                     params.get_one_spectrum(name, nullptr, SpectrumType::Illuminant));
     return s ? s : std::make_shared<DenselySampledSpectrum>(params.color_space().illuminant());
 }
 
@@ -49,7 +71,7 @@ Vec3f direction_between(const ParameterDictionary &params, Vec3f from, Vec3f to)
 
 LightPtr create_point(const Transform &render_from_light, const ParameterDictionary &params) {
     SpectrumPtr I = light_spectrum(params, "I");
-    float scale = photometric_scale(params.get_one_float("scale", 1), *I);
+    float scale = photometric_scale(read_scale(params), *I);
     float power = params.get_one_float("power", -1);
     // Intensity 1 over the sphere of directions gives power 4 pi.
     if (power > 0) scale *= power / (4 * Pi);
@@ -60,7 +82,7 @@ LightPtr create_point(const Transform &render_from_light, const ParameterDiction
 
 LightPtr create_spot(const Transform &render_from_light, const ParameterDictionary &params) {
     SpectrumPtr I = light_spectrum(params, "I");
-    float scale = photometric_scale(params.get_one_float("scale", 1), *I);
+    float scale = photometric_scale(read_scale(params), *I);
     float cone_angle = params.get_one_float_checked("coneangle", 30, 0, 180);
     float cone_delta = params.get_one_float_checked("conedeltaangle", 5, 0, 180);
     Vec3f from = params.get_one_point3("from", {0, 0, 0});
@@ -81,7 +103,7 @@ LightPtr create_spot(const Transform &render_from_light, const ParameterDictiona
 
 LightPtr create_distant(const Transform &render_from_light, const ParameterDictionary &params) {
     SpectrumPtr L = light_spectrum(params, "L");
-    float scale = photometric_scale(params.get_one_float("scale", 1), *L);
+    float scale = photometric_scale(read_scale(params), *L);
     Vec3f from = params.get_one_point3("from", {0, 0, 0});
     Vec3f to = params.get_one_point3("to", {0, 0, 1});
     // Light-space +z points back towards the light, from "to" to "from".
@@ -104,8 +126,9 @@ EnvironmentMapping environment_mapping(const RGBImage &image, const ParameterDic
 }
 
 LightPtr create_infinite(const Transform &render_from_light, const ParameterDictionary &params) {
-    SpectrumPtr L = params.get_one_spectrum("L", nullptr, SpectrumType::Illuminant);
-    float scale = params.get_one_float("scale", 1);
+    SpectrumPtr L = checked_emission(params, "L",
+                                     params.get_one_spectrum("L", nullptr, SpectrumType::Illuminant));
+    float scale = read_scale(params);
     std::string filename = params.get_one_string("filename", "");
     float illuminance = params.get_one_float("illuminance", -1);
     if (!params.get_point3_array("portal").empty())
@@ -125,12 +148,10 @@ LightPtr create_infinite(const Transform &render_from_light, const ParameterDict
         throw InputError(params.location("L"),
                          "an infinite light takes either \"L\" or \"filename\", not both");
 
-    std::filesystem::path path(filename);
-    if (path.is_relative() && !params.base_directory().empty())
-        path = std::filesystem::path(params.base_directory()) / path;
+    std::string path = params.file_path("filename", filename);
     RGBImage image;
     try {
-        image = read_rgb_image(path.string());
+        image = read_rgb_image(path);
     } catch (const std::runtime_error &e) {
         throw InputError(params.location("filename"), e.what());
     }
@@ -175,7 +196,7 @@ std::vector<LightPtr> create_area_lights(const std::string &type, const Paramete
                                          const SourceLocation &loc) {
     if (type != "diffuse") throw InputError(loc, "unknown area light type \"" + type + "\"");
     SpectrumPtr L = light_spectrum(params, "L");
-    float scale = photometric_scale(params.get_one_float("scale", 1), *L);
+    float scale = photometric_scale(read_scale(params), *L);
     bool two_sided = params.get_one_bool("twosided", false);
     float power = params.get_one_float("power", -1);
     if (!params.get_one_string("filename", "").empty())

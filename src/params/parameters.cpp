@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <span>
 
 namespace caustica {
@@ -46,6 +47,41 @@ bool is_property_type(const std::string &type) {
     throw InputError(p.loc, "parameter \"" + p.declaration() + "\": " + message);
 }
 
+// A reflectance above one would create energy. pbrt-v4 stops with an error; we clamp, since
+// such values are mostly rounding in exported scenes, and say so at the parameter. Spectrum
+// textures are built for every use they might have, so the wording allows that the parameter
+// may never be used as a reflectance.
+void warn_reflectance_clamped(const ParsedParameter &p) {
+    warning(p.loc, "parameter \"" + p.declaration() +
+                       "\": values above 1 are clamped to 1 where it is used as a reflectance");
+}
+
+float albedo_value(const ParsedParameter &p, float value) {
+    if (value < 0) fail(p, "a reflectance must not be negative (" + format_number(value) + ")");
+    if (value > 1) {
+        warn_reflectance_clamped(p);
+        return 1;
+    }
+    return value;
+}
+
+// Interleaved (wavelength, value) pairs as a spectrum of the given type.
+SpectrumPtr piecewise_spectrum(const ParsedParameter &p, std::vector<float> pairs,
+                               SpectrumType type) {
+    if (type == SpectrumType::Albedo) {
+        bool clamped = false;
+        for (size_t i = 1; i < pairs.size(); i += 2) {
+            if (pairs[i] < 0)
+                fail(p, "a reflectance must not be negative (" + format_number(pairs[i]) + " at " +
+                            format_number(pairs[i - 1]) + " nm)");
+            clamped |= pairs[i] > 1;
+            pairs[i] = std::min(pairs[i], 1.f);
+        }
+        if (clamped) warn_reflectance_clamped(p);
+    }
+    return PiecewiseLinearSpectrum::from_interleaved(pairs, false);
+}
+
 void expect_single(const ParsedParameter &p, size_t count, int per_item) {
     if (count != size_t(per_item))
         fail(p, per_item == 1 ? "expected a single value, found " + std::to_string(count)
@@ -79,8 +115,12 @@ void validate_parameter(const ParsedParameter &p) {
     if ((t == "string" || t == "texture") && p.strings.empty())
         fail(p, "expected quoted string values");
     if (t == "bool" && p.bools.empty()) fail(p, "expected true or false");
-    for (double v : p.numbers)
+    for (double v : p.numbers) {
         if (!std::isfinite(v)) fail(p, "non-finite value");
+        // Values are used as floats: beyond this they would become infinite.
+        if (std::abs(v) > std::numeric_limits<float>::max())
+            fail(p, format_number(v) + " is too large for single precision");
+    }
     if (is_numeric_type(t)) {
         int n = values_per_item(t);
         if (p.numbers.size() % n != 0)
@@ -281,9 +321,10 @@ SpectrumPtr ParameterDictionary::spectrum_from(const ParsedParameter &p, Spectru
         const RGBColorSpace &cs = p.color_space ? *p.color_space : color_space();
         switch (type) {
         case SpectrumType::Albedo:
-            // A reflectance above one would create energy; pbrt-v4 rejects it too.
-            if (rgb.r > 1 || rgb.g > 1 || rgb.b > 1)
-                fail(p, "RGB components of a reflectance must lie in [0, 1]");
+            if (rgb.r > 1 || rgb.g > 1 || rgb.b > 1) {
+                warn_reflectance_clamped(p);
+                rgb = {std::min(rgb.r, 1.f), std::min(rgb.g, 1.f), std::min(rgb.b, 1.f)};
+            }
             return std::make_shared<RGBAlbedoSpectrum>(cs, rgb);
         case SpectrumType::Unbounded:
             return std::make_shared<RGBUnboundedSpectrum>(cs, rgb);
@@ -296,32 +337,43 @@ SpectrumPtr ParameterDictionary::spectrum_from(const ParsedParameter &p, Spectru
         if (!(p.numbers[0] > 0)) fail(p, "the temperature must be positive");
         return std::make_shared<BlackbodySpectrum>(float(p.numbers[0]));
     }
-    if (p.type == "float") {
+    if (p.type == "float" || (p.type == "spectrum" && p.numbers.size() == 1)) {
         expect_single(p, p.numbers.size(), 1);
-        return std::make_shared<ConstantSpectrum>(float(p.numbers[0]));
+        float value = float(p.numbers[0]);
+        if (type == SpectrumType::Albedo) value = albedo_value(p, value);
+        return std::make_shared<ConstantSpectrum>(value);
     }
-    // "spectrum": a constant, wavelength-value pairs, a named spectrum or a file.
-    if (p.numbers.size() == 1) return std::make_shared<ConstantSpectrum>(float(p.numbers[0]));
+    // "spectrum": wavelength-value pairs, a named spectrum or a file.
     if (!p.numbers.empty()) {
         std::vector<float> pairs(p.numbers.begin(), p.numbers.end());
         for (size_t i = 2; i < pairs.size(); i += 2)
             if (!(pairs[i] > pairs[i - 2]))
                 fail(p, "wavelengths must increase (" + format_number(pairs[i - 2]) +
                             " is followed by " + format_number(pairs[i]) + ")");
-        return PiecewiseLinearSpectrum::from_interleaved(pairs, false);
+        return piecewise_spectrum(p, std::move(pairs), type);
     }
     expect_single(p, p.strings.size(), 1);
     const std::string &name = p.strings[0];
     if (SpectrumPtr named = get_named_spectrum(name)) return named;
-    std::filesystem::path path(name);
-    if (path.is_relative() && !base_directory_.empty())
-        path = std::filesystem::path(base_directory_) / path;
+    if (!file_access_)
+        fail(p, "\"" + name + "\" is not a named spectrum (and spectrum files are not read: file "
+                "access is disabled)");
+    std::vector<float> pairs;
     try {
-        std::vector<float> pairs = read_spectrum_file(path.string());
-        return PiecewiseLinearSpectrum::from_interleaved(pairs, false);
+        pairs = read_spectrum_file(file_path(p.name, name));
     } catch (const InputError &e) {
         fail(p, "\"" + name + "\" is not a named spectrum, and as a file: " + e.message());
     }
+    return piecewise_spectrum(p, std::move(pairs), type);
+}
+
+std::string ParameterDictionary::file_path(const std::string &name, const std::string &file) const {
+    if (!file_access_)
+        throw InputError(location(name), "\"" + file + "\" is not read: file access is disabled");
+    std::filesystem::path path(file);
+    if (path.is_relative() && !base_directory_.empty())
+        path = std::filesystem::path(base_directory_) / path;
+    return path.string();
 }
 
 SpectrumPtr ParameterDictionary::get_one_spectrum(const std::string &name, SpectrumPtr def,

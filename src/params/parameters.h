@@ -96,6 +96,13 @@ class ParameterDictionary {
     // Warn about parameters no create_* function looked at (pbrt would error; we warn, naming it).
     void report_unused() const;
     const std::string &base_directory() const { return base_directory_; }
+    // The file that parameter `name` names (`file`, as written), resolved against the scene
+    // file's directory when relative. Throws InputError at the parameter when file access is
+    // disabled.
+    std::string file_path(const std::string &name, const std::string &file) const;
+    // Scenes parsed from untrusted text in memory (ParseOptions::file_access, the fuzzer) must
+    // not make the renderer read files: every file a parameter names is then an InputError.
+    void disable_file_access() { file_access_ = false; }
 
     // Colour space for RGB values (pbrt's `ColorSpace` directive in effect at the directive).
     const RGBColorSpace &color_space() const;
@@ -114,6 +121,7 @@ class ParameterDictionary {
     SourceLocation directive_loc_;
     const RGBColorSpace *color_space_ = nullptr;
     std::string base_directory_;
+    bool file_access_ = true;
 };
 
 } // namespace caustica

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -27,6 +28,13 @@ namespace fs = std::filesystem;
 
 // Include/Import nesting beyond this is almost certainly a runaway; real scenes use a few levels.
 constexpr int MaxIncludeDepth = 32;
+
+bool is_finite(const Matrix4 &m) {
+    for (const auto &row : m.m)
+        for (float v : row)
+            if (!std::isfinite(v)) return false;
+    return true;
+}
 
 std::string read_file(const fs::path &path, bool *ok) {
     std::ifstream in(path, std::ios::binary);
@@ -64,7 +72,9 @@ struct PushedState {
 // is restored when the imported file ends (pbrt-v4 parses imports with a copy of the state).
 struct Source {
     std::unique_ptr<Tokenizer> tokenizer;
-    fs::path canonical_path;  // for cycle detection; empty for text given as a string
+    // For cycle detection: the canonical path on disk, the normalised name of an in-memory
+    // file, or empty for text given as a string that no Include can name.
+    fs::path canonical_path;
     fs::path directory;       // relative Includes in this file resolve against it first
     std::optional<GraphicsState> state_after_import;
     size_t pushed_depth_at_import = 0;
@@ -82,16 +92,22 @@ struct NameReference {
 
 class SceneParser {
   public:
-    SceneParser(SceneDescription &desc, std::string base_directory)
-        : desc_(desc), base_directory_(std::move(base_directory)) {
+    SceneParser(SceneDescription &desc, std::string base_directory, const ParseOptions &options)
+        : desc_(desc), base_directory_(std::move(base_directory)),
+          file_access_(options.file_access) {
         state_.color_space = &RGBColorSpace::srgb();
         desc_.color_space = state_.color_space;
+        for (const auto &[name, text] : options.files)
+            memory_files_[fs::path(name).lexically_normal()] = &text;
     }
 
     void push_text(std::string text, const std::string &name, fs::path directory) {
         Source s;
         s.tokenizer = std::make_unique<Tokenizer>(std::move(text), intern(name));
         s.directory = std::move(directory);
+        // Without file access, names are paths into the in-memory files: an Include of the
+        // text's own name is a cycle.
+        if (!file_access_) s.canonical_path = fs::path(name).lexically_normal();
         sources_.push_back(std::move(s));
     }
 
@@ -265,7 +281,11 @@ class SceneParser {
     double number_from(const Token &t) {
         double v = 0;
         switch (parse_number_text(t.text, &v)) {
-        case NumberTextStatus::Ok: return v;
+        case NumberTextStatus::Ok:
+            // Every number ends up a float: beyond this it would become infinite.
+            if (std::abs(v) > double(std::numeric_limits<float>::max()))
+                error(t, "number " + t.describe() + " is too large for single precision");
+            return v;
         case NumberTextStatus::NotFinite: error(t, "non-finite number " + t.describe());
         case NumberTextStatus::NotANumber: break;
         }
@@ -420,6 +440,7 @@ class SceneParser {
         ParameterDictionary d(std::move(params), directive.location(), state_.color_space,
                               base_directory_);
         if (defaults) d.add_defaults(*defaults);
+        if (!file_access_) d.disable_file_access();
         return d;
     }
 
@@ -443,12 +464,20 @@ class SceneParser {
             error(directive, directive.text + " is only allowed after WorldBegin");
     }
 
-    void apply(const Transform &t) {
-        if (state_.start_transform_active) state_.ctm = state_.ctm * t;
+    // Transform directive `d` applies `t` on the right of the CTM.
+    void apply(const Token &d, const Transform &t) {
+        if (state_.start_transform_active) set_ctm(d, state_.ctm * t);
     }
 
-    void set_ctm(const Transform &t) {
-        if (state_.start_transform_active) state_.ctm = t;
+    void set_ctm(const Token &d, const Transform &t) {
+        if (!state_.start_transform_active) return;
+        // Each transform may be invertible while their product over- or underflows single
+        // precision (Scale 1e-30 twice): its matrix or inverse would then hold infinities and
+        // turn every point it moves into NaN.
+        if (!is_finite(t.matrix()) || !is_finite(t.inverse_matrix()))
+            error(d, d.text + ": the current transformation is not invertible in single "
+                              "precision (its entries or those of its inverse overflow)");
+        state_.ctm = t;
     }
 
     void warn_motion_blur(const Token &directive) {
@@ -562,8 +591,8 @@ class SceneParser {
         state_.color_space = cs;
     }
 
-    void concat_transform(const Token &d) { apply(matrix_transform(d)); }
-    void transform(const Token &d) { set_ctm(matrix_transform(d)); }
+    void concat_transform(const Token &d) { apply(d, matrix_transform(d)); }
+    void transform(const Token &d) { set_ctm(d, matrix_transform(d)); }
 
     Transform matrix_transform(const Token &d) {
         std::vector<double> v = bracketed_matrix(d);
@@ -599,7 +628,7 @@ class SceneParser {
         film_color_space_ = state_.color_space;
     }
 
-    void identity(const Token &) { set_ctm(Transform()); }
+    void identity(const Token &d) { set_ctm(d, Transform()); }
 
     void include(const Token &d) { include_file(d, false); }
 
@@ -611,6 +640,10 @@ class SceneParser {
     void include_file(const Token &d, bool is_import) {
         Token name_tok = peek();
         std::string name = string_argument(d, "file name");
+        if (!file_access_) {
+            include_memory_file(d, name_tok, name, is_import);
+            return;
+        }
         fs::path path(name);
         if (path.is_relative()) {
             // Relative to the including file; pbrt-v4 resolves against the main scene file's
@@ -625,21 +658,45 @@ class SceneParser {
             error(name_tok, d.text + ": cannot open \"" + name + "\" (looked for " +
                                 path.string() + ")");
         fs::path canonical = fs::weakly_canonical(path, ec);
+        check_nesting(d, name_tok, name, canonical);
+        std::optional<GraphicsState> saved;
+        if (is_import) saved = state_;
+        push_file(path, name_tok.location());
+        if (is_import) start_import(std::move(saved));
+    }
+
+    // Include/Import without file access: the file comes from ParseOptions::files.
+    void include_memory_file(const Token &d, const Token &name_tok, const std::string &name,
+                             bool is_import) {
+        fs::path path = (sources_.back().directory / fs::path(name)).lexically_normal();
+        // The main text is no in-memory file, but naming it is a cycle all the same.
+        check_nesting(d, name_tok, name, path);
+        auto it = memory_files_.find(path);
+        if (it == memory_files_.end())
+            error(name_tok, d.text + ": cannot open \"" + name + "\" (file access is disabled and "
+                                     "no in-memory file is called " + path.string() + ")");
+        std::optional<GraphicsState> saved;
+        if (is_import) saved = state_;
+        push_text(*it->second, path.string(), path.parent_path());
+        if (is_import) start_import(std::move(saved));
+    }
+
+    void check_nesting(const Token &d, const Token &name_tok, const std::string &name,
+                       const fs::path &canonical) {
         for (const Source &s : sources_)
             if (!s.canonical_path.empty() && s.canonical_path == canonical)
                 error(name_tok, d.text + " cycle: \"" + name + "\" is already being read");
         if (int(sources_.size()) >= MaxIncludeDepth)
             error(name_tok, d.text + ": files nested more than " +
                                 std::to_string(MaxIncludeDepth) + " levels deep");
-        std::optional<GraphicsState> saved;
-        if (is_import) saved = state_;
-        push_file(path, name_tok.location());
-        if (is_import) {
-            Source &s = sources_.back();
-            s.state_after_import = std::move(saved);
-            s.pushed_depth_at_import = pushed_.size();
-            attribute_floor_ = pushed_.size();
-        }
+    }
+
+    // The file just pushed is imported: the importer's state comes back when it ends.
+    void start_import(std::optional<GraphicsState> saved) {
+        Source &s = sources_.back();
+        s.state_after_import = std::move(saved);
+        s.pushed_depth_at_import = pushed_.size();
+        attribute_floor_ = pushed_.size();
     }
 
     void integrator(const Token &d) {
@@ -664,7 +721,7 @@ class SceneParser {
         Vec3f target{float(v[3]), float(v[4]), float(v[5])};
         Vec3f up{float(v[6]), float(v[7]), float(v[8])};
         try {
-            apply(Transform::look_at(eye, target, up));
+            apply(d, Transform::look_at(eye, target, up));
         } catch (const std::invalid_argument &e) {
             error(d, e.what());
         }
@@ -817,7 +874,7 @@ class SceneParser {
         std::vector<double> v = number_arguments(d, 4);
         Vec3f axis{float(v[1]), float(v[2]), float(v[3])};
         if (length_squared(axis) == 0) error(d, "Rotate: the rotation axis is zero");
-        apply(Transform::rotate(float(v[0]), axis));
+        apply(d, Transform::rotate(float(v[0]), axis));
     }
 
     void sampler(const Token &d) {
@@ -830,7 +887,7 @@ class SceneParser {
         std::vector<double> v = number_arguments(d, 3);
         if (v[0] == 0 || v[1] == 0 || v[2] == 0)
             error(d, "Scale by zero: the transform would not be invertible");
-        apply(Transform::scale(float(v[0]), float(v[1]), float(v[2])));
+        apply(d, Transform::scale(float(v[0]), float(v[1]), float(v[2])));
     }
 
     void shape(const Token &d) {
@@ -889,7 +946,7 @@ class SceneParser {
 
     void translate(const Token &d) {
         std::vector<double> v = number_arguments(d, 3);
-        apply(Transform::translate(Vec3f{float(v[0]), float(v[1]), float(v[2])}));
+        apply(d, Transform::translate(Vec3f{float(v[0]), float(v[1]), float(v[2])}));
     }
 
     void world_begin(const Token &d) {
@@ -935,6 +992,8 @@ class SceneParser {
 
     SceneDescription &desc_;
     std::string base_directory_;
+    bool file_access_ = true;
+    std::map<fs::path, const std::string *> memory_files_;  // ParseOptions::files, normalised
     std::vector<std::unique_ptr<std::string>> file_names_;
     std::vector<Source> sources_;
     std::vector<FinishedImport> finished_imports_;
@@ -959,16 +1018,22 @@ class SceneParser {
 SceneDescription parse_scene_file(const std::string &path) {
     SceneDescription desc;
     fs::path p(path);
-    SceneParser parser(desc, p.parent_path().string());
+    SceneParser parser(desc, p.parent_path().string(), ParseOptions{});
     parser.push_file(p, {});
     parser.parse();
     return desc;
 }
 
 SceneDescription parse_scene_string(const std::string &text, const std::string &name) {
+    return parse_scene_string(text, name, ParseOptions{});
+}
+
+SceneDescription parse_scene_string(const std::string &text, const std::string &name,
+                                    const ParseOptions &options) {
     SceneDescription desc;
-    SceneParser parser(desc, "");
-    parser.push_text(text, name, fs::path());
+    SceneParser parser(desc, "", options);
+    // In-memory files resolve against the text's own name, as files on disk would.
+    parser.push_text(text, name, options.file_access ? fs::path() : fs::path(name).parent_path());
     parser.parse();
     return desc;
 }

@@ -13,6 +13,7 @@
 #include "core/transform.h"
 #include "params/parameters.h"
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -95,11 +96,26 @@ struct SceneDescription {
     std::vector<std::string> warnings;  // also printed through caustica::warning
 };
 
+// How parsing may reach files beyond the text it is given.
+struct ParseOptions {
+    // When false, nothing is read from disk: Include and Import find their files only in
+    // `files`, and every parameter that names a file to read (spectrum files, "plymesh",
+    // image "filename"s) is an InputError when used (ParameterDictionary::file_path). For text
+    // from untrusted sources, such as the fuzzer's.
+    bool file_access = true;
+    // In-memory files for Include/Import when file access is off, by path: a relative name in
+    // an Include resolves against the including file's name, as on disk ("a/b.pbrt" including
+    // "c.pbrt" reads "a/c.pbrt"), and paths are compared after lexical normalisation.
+    std::map<std::string, std::string> files;
+};
+
 // Parse a scene file and everything it includes. Throws InputError at the offending token's
 // file:line:column for malformed input.
 SceneDescription parse_scene_file(const std::string &path);
 // Parse scene text; relative Include and parameter file names resolve against the current
 // directory. `name` appears as the file in locations.
 SceneDescription parse_scene_string(const std::string &text, const std::string &name = "<string>");
+SceneDescription parse_scene_string(const std::string &text, const std::string &name,
+                                    const ParseOptions &options);
 
 } // namespace caustica

@@ -127,15 +127,15 @@ TEST_P(TransportAgreement, MatchesPathTracerReference) {
 // alone does not render those pixels (it is exercised in the other integrators' strategies).
 const AgreementCase kCases[] = {
     {"pool-air", "pt", 64},          {"pool-air", "bdpt", 64},         {"pool-air", "sppm", 256},
-    {"pool-air", "bpm", 128},         {"pool-air", "vcm", 32},
+    {"pool-air", "bpm", 128},         {"pool-air", "vcm", 64},
     {"pool-underwater", "pt", 64},   {"pool-underwater", "lt", 256},    {"pool-underwater", "bdpt", 64},
-    {"pool-underwater", "sppm", 256}, {"pool-underwater", "bpm", 128},   {"pool-underwater", "vcm", 32},
+    {"pool-underwater", "sppm", 256}, {"pool-underwater", "bpm", 128},   {"pool-underwater", "vcm", 64},
     {"glass-block", "pt", 64},       {"glass-block", "bdpt", 32},      {"glass-block", "sppm", 512},
-    {"glass-block", "bpm", 128},      {"glass-block", "vcm", 32},
+    {"glass-block", "bpm", 128},      {"glass-block", "vcm", 64},
     {"rough-glass-slab", "pt", 64},  {"rough-glass-slab", "lt", 256},   {"rough-glass-slab", "bdpt", 32},
-    {"rough-glass-slab", "sppm", 256},{"rough-glass-slab", "bpm", 256},  {"rough-glass-slab", "vcm", 32},
+    {"rough-glass-slab", "sppm", 256},{"rough-glass-slab", "bpm", 256},  {"rough-glass-slab", "vcm", 64},
     {"prism", "pt", 64},             {"prism", "bdpt", 32},            {"prism", "sppm", 256},
-    {"prism", "bpm", 128},            {"prism", "vcm", 32},
+    {"prism", "bpm", 128},            {"prism", "vcm", 64},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, TransportAgreement, ::testing::ValuesIn(kCases),

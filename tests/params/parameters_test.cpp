@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 namespace caustica {
 namespace {
 
@@ -187,7 +189,12 @@ TEST(ParameterSpectra, RgbFlavoursFollowTheSpectrumType) {
 
 TEST(ParameterSpectra, RgbRanges) {
     auto d = dict({numbers("rgb", "bright", {2, 0.5, 0.5}, 2), numbers("rgb", "negative", {0.5, -0.1, 0}, 3)});
-    EXPECT_EQ(error_location([&] { d.get_one_spectrum("bright", nullptr, SpectrumType::Albedo); }).line, 2);
+    set_warnings_enabled(false);
+    // A reflectance above one is clamped (with a warning): the same spectrum as RGB (1, 0.5, 0.5).
+    SpectrumPtr clamped = d.get_one_spectrum("bright", nullptr, SpectrumType::Albedo);
+    set_warnings_enabled(true);
+    RGBAlbedoSpectrum at_one(RGBColorSpace::srgb(), RGB{1, 0.5f, 0.5f});
+    for (float lambda : {400.f, 550.f, 700.f}) EXPECT_FLOAT_EQ((*clamped)(lambda), at_one(lambda));
     EXPECT_NE(d.get_one_spectrum("bright", nullptr, SpectrumType::Unbounded), nullptr);
     EXPECT_NE(d.get_one_spectrum("bright", nullptr, SpectrumType::Illuminant), nullptr);
     for (SpectrumType t : {SpectrumType::Albedo, SpectrumType::Unbounded, SpectrumType::Illuminant})
@@ -249,6 +256,53 @@ TEST(ParameterSpectra, NamedAndFromFile) {
     EXPECT_FLOAT_EQ((*f)(550), 2.5f);
     EXPECT_EQ(error_location([&] { d.get_one_spectrum("nothing", nullptr, SpectrumType::Unbounded); }).line, 6);
     EXPECT_EQ(d.base_directory(), data);
+}
+
+TEST(ParameterSpectra, ReflectanceAboveOneIsClampedAndBelowZeroIsAnError) {
+    auto d = dict({numbers("float", "high", {1.5}), numbers("spectrum", "pairs", {400, 0.5, 700, 1.25}),
+                   numbers("float", "negative", {-0.25}, 4), numbers("spectrum", "dip", {400, 0.5, 700, -0.5}, 5),
+                   numbers("spectrum", "eta", {400, 1.5, 700, 1.25})});
+    set_warnings_enabled(false);
+    EXPECT_FLOAT_EQ((*d.get_one_spectrum("high", nullptr, SpectrumType::Albedo))(550), 1);
+    SpectrumPtr pairs = d.get_one_spectrum("pairs", nullptr, SpectrumType::Albedo);
+    // Linear from 0.5 at 400 nm to 1 (clamped from 1.25) at 700 nm.
+    EXPECT_FLOAT_EQ((*pairs)(400), 0.5f);
+    EXPECT_FLOAT_EQ((*pairs)(550), 0.75f);
+    EXPECT_FLOAT_EQ((*pairs)(700), 1);
+    // Quantities that are not reflectances keep their values.
+    EXPECT_FLOAT_EQ((*d.get_one_spectrum("high", nullptr, SpectrumType::Unbounded))(550), 1.5f);
+    EXPECT_FLOAT_EQ((*d.get_one_spectrum("eta", nullptr, SpectrumType::Albedo))(700), 1);
+    EXPECT_FLOAT_EQ((*d.get_one_spectrum("eta", nullptr, SpectrumType::Unbounded))(700), 1.25f);
+    EXPECT_EQ(error_location([&] { d.get_one_spectrum("negative", nullptr, SpectrumType::Albedo); }).line, 4);
+    EXPECT_EQ(error_location([&] { d.get_one_spectrum("dip", nullptr, SpectrumType::Albedo); }).line, 5);
+    set_warnings_enabled(true);
+}
+
+TEST(ParameterDictionary, ValuesBeyondSinglePrecisionAreErrors) {
+    // Finite as doubles, infinite as the floats every quantity is read as.
+    EXPECT_EQ(error_location([] { dict({numbers("float", "radius", {1e39}, 3)}); }).line, 3);
+    EXPECT_EQ(error_location([] { dict({numbers("point3", "P", {0, -5e38, 0}, 4)}); }).line, 4);
+    EXPECT_NO_THROW(dict({numbers("float", "radius", {3e38})}));
+}
+
+TEST(ParameterDictionary, FilePathsAndDisabledFileAccess) {
+    auto d = dict({strings("string", "filename", {"mesh.ply"}, 2),
+                   strings("spectrum", "eta", {"glass-BK7"}, 3),
+                   strings("spectrum", "file", {"spectrum_pairs.spd"}, 4)},
+                  nullptr, "scenes");
+    EXPECT_EQ(d.file_path("filename", "mesh.ply"), (std::filesystem::path("scenes") / "mesh.ply").string());
+    EXPECT_EQ(d.file_path("filename", "/abs/mesh.ply"), "/abs/mesh.ply");
+    d.disable_file_access();
+    EXPECT_EQ(error_location([&] { d.file_path("filename", "mesh.ply"); }).line, 2);
+    // Named spectra need no file; any other name would be read from disk, which is refused.
+    EXPECT_EQ(d.get_one_spectrum("eta", nullptr, SpectrumType::Unbounded), get_named_spectrum("glass-BK7"));
+    try {
+        d.get_one_spectrum("file", nullptr, SpectrumType::Unbounded);
+        ADD_FAILURE() << "a spectrum file was read with file access disabled";
+    } catch (const InputError &e) {
+        EXPECT_EQ(e.location().line, 4);
+        EXPECT_NE(e.message().find("file access is disabled"), std::string::npos) << e.message();
+    }
 }
 
 TEST(ParameterSpectra, DefaultsAndTextureParametersReadAsAbsent) {
