@@ -35,6 +35,12 @@ int main(int argc, char **argv) {
     render_cmd->add_flag("--variance", render.variance_layer,
                          "Add a \"variance\" layer to the EXR: each pixel's estimated variance of its mean");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress output");
+    render_cmd->add_option("--checkpoint", render.checkpoint_seconds,
+                           "Save the render's state to OUT.checkpoint for --resume, at the first pause between "
+                           "sweeps after each SECONDS (0: at every pause) and when interrupted")
+        ->check(CLI::Range(0.0, 1e9));
+    render_cmd->add_flag("--resume", render.resume,
+                         "Continue from OUT.checkpoint (the same command line otherwise)");
 
     std::string info_scene;
     CLI::App *info_cmd = app.add_subcommand("info", "Describe what a scene contains");

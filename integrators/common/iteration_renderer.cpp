@@ -44,7 +44,8 @@ struct IterationRenderer::Threads {
 IterationRenderer::IterationRenderer(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                                      const ProgressCallback &progress)
     : scene_(scene), budget_(budget), stats_(stats), progress_(progress),
-      start_(std::chrono::steady_clock::now()), seconds_before_(stats.seconds), threads_(std::make_unique<Threads>(scene)) {
+      start_(std::chrono::steady_clock::now()), seconds_before_(stats.seconds),
+      threads_(std::make_unique<Threads>(scene)) {
     const PixelBounds &bounds = scene.film->pixel_bounds();
     pixel_count_ = size_t(bounds.width()) * bounds.height();
     for (int y = bounds.min.y; y < bounds.max.y; y += kTileSize)

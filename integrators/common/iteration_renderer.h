@@ -4,7 +4,8 @@
 // is counted in whole iterations: `--spp N` means N iterations, as in SmallVCM and pbrt-v4.
 //
 // A pass visits the film's pixels in tiles over oneTBB. Every pixel's random numbers depend only
-// on (pixel, iteration, first sampler dimension, seed), so results do not depend on threads.
+// on (pixel, iteration, first sampler dimension, seed), so results do not depend on threads, nor
+// on whether the render was resumed from a checkpoint taken between iterations.
 #pragma once
 
 #include "core/scratch_buffer.h"

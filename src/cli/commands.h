@@ -23,6 +23,8 @@ struct RenderCommandOptions {
     bool single_wavelength = false;
     bool variance_layer = false; // add a "variance" layer to the EXR
     bool quiet = false;
+    double checkpoint_seconds = -1; // >= 0: save a checkpoint at most this often (cli/checkpoint.h)
+    bool resume = false;            // continue from the output's checkpoint
 };
 
 struct DiffCommandOptions {

@@ -1,3 +1,4 @@
+#include "cli/checkpoint.h"
 #include "cli/commands.h"
 #include "cli/progress_reporter.h"
 #include "cli/render_session.h"
@@ -8,9 +9,12 @@
 #include <tbb/global_control.h>
 
 #include <csignal>
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sys/resource.h>
 
 namespace caustica {
@@ -104,10 +108,39 @@ int run_render(const RenderCommandOptions &options) {
     budget.seconds = options.seconds;
     if (options.seconds > 0 && options.spp == 0) budget.spp = 0; // time alone decides
 
+    // Checkpoints live next to the image (the EXR, else the PNG).
+    const bool checkpointing = options.checkpoint_seconds >= 0;
+    const std::string checkpoint = checkpoint_path(exr_path.empty() ? png_path : exr_path);
+    RenderFingerprint fingerprint;
+    if (checkpointing || options.resume)
+        fingerprint = render_fingerprint(options.scene_path, description, *scene, budget, options.variance_layer);
     RenderStats stats;
+    if (options.resume) {
+        read_checkpoint(checkpoint, fingerprint, session, stats);
+        if (!options.quiet)
+            std::fprintf(stderr, "resuming from %s: %d samples per pixel done%s\n", checkpoint.c_str(),
+                         stats.samples_per_pixel,
+                         stats.pixel_sample_counts.empty() ? "" : " (and part of the next sweep)");
+    } else if (checkpointing && std::filesystem::exists(checkpoint)) {
+        warning("replacing the checkpoint \"" + checkpoint + "\" of an earlier render (--resume continues from it)");
+    }
+    std::optional<CheckpointWriter> writer;
+    if (checkpointing) {
+        writer.emplace(checkpoint, fingerprint, options.checkpoint_seconds, session, stats, &interrupt_requested);
+        budget.at_boundary = [&writer] { writer->at_boundary(); };
+    }
+
+    // Progress of this process's part of the render, so that its rate and the time left are
+    // measured over what it did.
+    const double fraction_before = budget.seconds > 0 ? std::min(1.0, stats.seconds / budget.seconds)
+                                   : budget.spp > 0   ? double(stats.samples_per_pixel) / budget.spp
+                                                      : 0;
+    const uint64_t samples_before = stats.pixel_samples;
     ProgressReporter progress(!options.quiet);
-    session.render(budget, stats,
-                   [&progress](double fraction, uint64_t samples) { progress.update(fraction, samples); });
+    session.render(budget, stats, [&](double fraction, uint64_t samples) {
+        progress.update(fraction_before < 1 ? (fraction - fraction_before) / (1 - fraction_before) : 1,
+                        samples - std::min(samples, samples_before));
+    });
     progress.finish();
 
     Image image = session.image(stats);
@@ -115,11 +148,23 @@ int run_render(const RenderCommandOptions &options) {
     if (!exr_path.empty()) write_exr(exr_path, image, render_metadata(*scene, stats, options.seed, options.scene_path));
     if (!png_path.empty()) write_png(png_path, image);
     if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads);
+    // Only once the image is written: a render killed before that can still be resumed.
+    if ((checkpointing || options.resume) && !stats.interrupted) std::filesystem::remove(checkpoint);
 
     if (stats.interrupted) {
         // Shell convention: 128 + the signal number (130 for SIGINT, 143 for SIGTERM).
         std::fprintf(stderr, "interrupted: wrote the partial image (%llu pixel samples)\n",
                      (unsigned long long)stats.pixel_samples.load());
+        if (writer && writer->saved_samples_per_pixel() >= 0)
+            std::fprintf(stderr, "checkpoint %s holds %d samples per pixel%s: add --resume to continue\n",
+                         checkpoint.c_str(), writer->saved_samples_per_pixel(),
+                         writer->saved_partial_sweep() ? " and part of the next sweep" : "");
+        else if (options.resume)
+            std::fprintf(stderr, "checkpoint %s is unchanged: add --resume to continue from it again\n",
+                         checkpoint.c_str());
+        else if (writer)
+            std::fprintf(stderr, "no checkpoint was written: none was due yet, and an iteration cut short "
+                                 "cannot be saved\n");
         return 128 + int(interrupt_signal);
     }
     if (!options.quiet) {

@@ -2,7 +2,9 @@
 
 #include <cassert>
 #include <cmath>
+#include <istream>
 #include <optional>
+#include <ostream>
 #include <stdexcept>
 
 namespace caustica {
@@ -140,6 +142,55 @@ Image Film::get_image(double splat_scale) const {
         warning("light-tracing contributions exceeded the film's fixed-point range; the image "
                 "is wrong where they landed");
     return image;
+}
+
+namespace {
+
+void write_u64(std::ostream &out, uint64_t value) { out.write(reinterpret_cast<const char *>(&value), sizeof value); }
+
+uint64_t read_u64(std::istream &in) {
+    uint64_t value = 0;
+    in.read(reinterpret_cast<char *>(&value), sizeof value);
+    return value;
+}
+
+template <typename T> void write_array(std::ostream &out, const std::vector<T> &values) {
+    write_u64(out, values.size());
+    out.write(reinterpret_cast<const char *>(values.data()), std::streamsize(values.size() * sizeof(T)));
+}
+
+// Reads an array that must hold `count` elements.
+template <typename T> void read_array(std::istream &in, std::vector<T> &values, size_t count) {
+    if (read_u64(in) != count || !in) throw std::runtime_error("film state: wrong pixel count");
+    values.resize(count);
+    in.read(reinterpret_cast<char *>(values.data()), std::streamsize(count * sizeof(T)));
+    if (!in) throw std::runtime_error("film state: truncated");
+}
+
+} // namespace
+
+void Film::save_state(std::ostream &out) const {
+    write_array(out, pixels_);
+    write_array(out, moments_);
+    std::vector<int64_t> splats(splats_.size());
+    for (size_t i = 0; i < splats.size(); ++i) splats[i] = splats_[i].load(std::memory_order_relaxed);
+    write_array(out, splats);
+    write_u64(out, splat_overflow_.load() ? 1 : 0);
+}
+
+void Film::restore_state(std::istream &in) {
+    std::vector<Pixel> pixels;
+    read_array(in, pixels, pixels_.size());
+    std::vector<Moments> moments;
+    read_array(in, moments, moments_.size());
+    std::vector<int64_t> splats;
+    read_array(in, splats, splats_.size());
+    const uint64_t overflow = read_u64(in);
+    if (!in || overflow > 1) throw std::runtime_error("film state: truncated");
+    pixels_ = std::move(pixels);
+    moments_ = std::move(moments);
+    for (size_t i = 0; i < splats.size(); ++i) splats_[i].store(splats[i], std::memory_order_relaxed);
+    splat_overflow_ = overflow != 0;
 }
 
 CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter) {

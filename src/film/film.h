@@ -27,6 +27,7 @@
 #include "sampler/sampler.h"
 
 #include <atomic>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -92,6 +93,14 @@ class Film {
     // average of the samples plus splat_scale times the splats divided by the filter's integral
     // (pbrt-v4; for light tracing, splat_scale is 1 / samples per pixel).
     Image get_image(double splat_scale) const;
+
+    // Checkpoints: the accumulated samples (pixel sums, moments and splats) in this machine's
+    // binary representation, so that a restored film continues bit-identically. restore_state
+    // reads what save_state wrote for a film of the same pixel bounds with variance on or off
+    // as then, and throws std::runtime_error if the data does not fit. Not thread-safe: call
+    // them while nothing is being added.
+    void save_state(std::ostream &out) const;
+    void restore_state(std::istream &in);
 
   private:
     size_t index(Vec2i pixel) const {

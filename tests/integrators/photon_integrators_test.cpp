@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
+
 using namespace caustica::testing;
 
 namespace {
@@ -64,6 +67,68 @@ TEST(PhotonIntegratorParameters, OutOfRangeValuesAreErrorsAtTheirLocation) {
         EXPECT_NE(message.find("scene.pbrt:"), std::string::npos) << message;
         EXPECT_NE(message.find(c[1]), std::string::npos) << message;
         EXPECT_FALSE(std::filesystem::exists(out));
+    }
+}
+
+} // namespace
+
+namespace {
+
+// Writes the Cornell box with its area light replaced by `lights` (scene directives).
+std::string cornell_box_lit_by(const std::string &dir, const std::string &name, const std::string &lights) {
+    std::string text = read_text(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.pbrt");
+    const size_t begin = text.find("AttributeBegin\n  AreaLightSource");
+    const size_t end = text.find("AttributeEnd", begin);
+    EXPECT_NE(begin, std::string::npos);
+    text.replace(begin, end + std::string("AttributeEnd").size() - begin, lights);
+    const std::string path = dir + "/" + name + ".pbrt";
+    std::FILE *f = std::fopen(path.c_str(), "wb");
+    std::fwrite(text.data(), 1, text.size(), f);
+    std::fclose(f);
+    return path;
+}
+
+double image_mean(const RgbImage &img) {
+    double sum = 0;
+    for (float v : img.rgb) sum += v;
+    return sum / double(img.rgb.size());
+}
+
+// Every light type starts light paths: the Cornell box lit by a point and a spot light, and
+// by an environment and a distant light (entering through the open front), rendered at one
+// wavelength (so that only transport is compared) by the photon integrators and by the path
+// tracer, at 64x64. The photon integrators are biased low near the box's edges and corners,
+// where part of the gather disk leaves the surface (the classic boundary bias of density
+// estimation; at 64x64 the default radius is about 2% of the box's width): the ratios were
+// 0.974 to 1.006 when this was written (the test prints them), against 0.996 to 1.001 at
+// 128x128 with half that radius. The 4% bound is loose for that reason, yet a light type whose
+// light paths were missing or misweighted (its merged or light-traced share lost or doubled)
+// moves the mean by tens of percent.
+TEST(PhotonIntegratorLights, EveryLightTypeAgreesWithThePathTracer) {
+    const std::string dir = scratch_dir("photon-lights");
+    const std::string scenes[] = {
+        cornell_box_lit_by(dir, "point-spot",
+                           "LightSource \"point\" \"point3 from\" [0 1.6 0] \"blackbody I\" [4000] \"float scale\" [3]\n"
+                           "LightSource \"spot\" \"point3 from\" [0.5 1.7 0.5] \"point3 to\" [0 0 0] \"rgb I\" [2 2 2]"
+                           " \"float coneangle\" [30]\n"),
+        cornell_box_lit_by(dir, "environment-distant",
+                           "LightSource \"infinite\" \"rgb L\" [0.5 0.6 0.8]\n"
+                           "LightSource \"distant\" \"point3 from\" [1 3 2] \"point3 to\" [0 0 0] \"rgb L\" [2 2 2]\n"),
+    };
+    for (const std::string &scene : scenes) {
+        auto render = [&](const std::string &integrator, int spp) {
+            const std::string out = dir + "/" + integrator + ".exr";
+            EXPECT_EQ(run_caustica("render " + scene + " --quiet --resolution 64x64 --wavelength 550 --integrator " + integrator +
+                                   " --spp " + std::to_string(spp) + " --seed 3 -o " + out),
+                      0);
+            return image_mean(read_rgb(out));
+        };
+        const double reference = render("pt", 256);
+        for (const char *integrator : {"sppm", "bpm", "vcm"}) {
+            const double mean = render(integrator, 64);
+            std::printf("%s on %s: mean / path tracer's = %.4f\n", integrator, scene.c_str(), mean / reference);
+            EXPECT_NEAR(mean / reference, 1.0, 0.04) << integrator << " on " << scene;
+        }
     }
 }
 
