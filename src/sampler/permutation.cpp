@@ -13,7 +13,11 @@ uint32_t permutation_element(uint32_t index, uint32_t n, uint64_t seed) {
     // key (invertible modulo 2^k) and a right xorshift (invertible: the high bits it reads
     // are unchanged by it). Keys come from the seed so each seed picks its own permutation.
     uint32_t keys[6];
-    for (int i = 0; i < 6; ++i) keys[i] = uint32_t(mix_bits(seed + uint64_t(i) * 0x632be59bd9b4e019ULL));
+    for (int i = 0; i < 3; ++i) {
+        uint64_t h = mix_bits(seed + uint64_t(i) * 0x632be59bd9b4e019ULL);
+        keys[2 * i] = uint32_t(h);
+        keys[2 * i + 1] = uint32_t(h >> 32);
+    }
     uint32_t v = index;
     do {
         for (int round = 0; round < 3; ++round) {

@@ -22,8 +22,10 @@ class Sampler {
   public:
     virtual ~Sampler() = default;
     virtual int samples_per_pixel() const = 0;
-    // Sample indices beyond samples_per_pixel() are valid (time-limited renders keep going):
-    // they start new, independent rounds of the same pattern.
+    // Sample indices beyond samples_per_pixel() are valid (time-limited and progressive
+    // renders keep going) and keep every value uniform: independent, stratified and zsobol
+    // start new, independently randomised rounds of their pattern; paddedsobol and sobol
+    // continue their Sobol sequence.
     virtual void start_pixel_sample(Vec2i pixel, int sample_index, int dimension = 0) = 0;
     virtual float get_1d() = 0;
     virtual Vec2f get_2d() = 0;

@@ -1,7 +1,12 @@
 #include "sampler/sampler_factory.h"
 
 #include "sampler/independent_sampler.h"
+#include "sampler/padded_sobol_sampler.h"
+#include "sampler/sobol_sampler.h"
 #include "sampler/stratified_sampler.h"
+#include "sampler/zsobol_sampler.h"
+
+#include <bit>
 
 namespace caustica {
 
@@ -15,9 +20,28 @@ int positive_count(const ParameterDictionary &params, const std::string &name, i
     return n;
 }
 
-bool is_low_discrepancy(const std::string &type) {
-    return type == "halton" || type == "sobol" || type == "paddedsobol" || type == "zsobol" ||
-           type == "pmj02bn";
+Randomization randomization_parameter(const ParameterDictionary &params, const std::string &def) {
+    std::string name = params.get_one_string("randomization", def);
+    std::optional<Randomization> r = parse_randomization(name);
+    if (!r)
+        throw InputError(params.location("randomization"),
+                         "\"" + name + "\": unknown randomization (expected \"owen\", \"fastowen\", "
+                         "\"permutedigits\" or \"none\")");
+    return *r;
+}
+
+// zsobol's pixel blocks are 2^k samples long; with fewer, each pixel uses the first spp points
+// of its block, which are less evenly spread than a whole block. The warning points at the
+// directive, or at nothing when the count came from the command line.
+void warn_if_not_power_of_two(const SourceLocation *loc, int spp) {
+    if (std::has_single_bit(uint32_t(spp))) return;
+    std::string message = "the \"zsobol\" sampler stratifies best with a power-of-two sample "
+                          "count; " + std::to_string(spp) + " samples per pixel are the first " +
+                          std::to_string(spp) + " of " + std::to_string(std::bit_ceil(uint32_t(spp)));
+    if (loc)
+        warning(*loc, message);
+    else
+        warning(message);
 }
 
 } // namespace
@@ -40,22 +64,39 @@ std::unique_ptr<Sampler> create_sampler(const std::string &type, const Parameter
         }
         return std::make_unique<StratifiedSampler>(xs, ys, jitter, seed);
     }
-    if (is_low_discrepancy(type)) {
+    const bool substitute = type == "halton" || type == "pmj02bn";
+    if (type == "zsobol" || type == "paddedsobol" || type == "sobol" || substitute) {
         int spp = spp_override > 0 ? spp_override : positive_count(params, "pixelsamples", 16);
-        // The scrambling choice only means something for the sampler being replaced.
-        params.get_one_string("randomization", "");
-        warning(loc, "the \"" + type + "\" sampler is not implemented yet (low-discrepancy "
-                     "samplers arrive later); using a jittered stratified sampler with the same " +
-                         std::to_string(spp) + " samples per pixel");
-        Vec2i grid = stratified_grid(spp);
-        return std::make_unique<StratifiedSampler>(grid.x, grid.y, true, seed);
+        // pbrt-v4's default is fastowen. Halton's (permutedigits) permutes Halton's digits; the
+        // zsobol standing in for it keeps fastowen unless the scene names a randomization.
+        // pmj02bn has no randomization parameter, so a stray one is reported as unused.
+        Randomization randomization = Randomization::FastOwen;
+        if (type == "halton") {
+            if (params.has("randomization")) {
+                randomization = randomization_parameter(params, "");
+                if (randomization == Randomization::FastOwen)
+                    throw InputError(params.location("randomization"),
+                                     "\"fastowen\" randomization is not supported by the halton sampler");
+            }
+        } else if (type != "pmj02bn") {
+            randomization = randomization_parameter(params, "fastowen");
+        }
+        if (type == "paddedsobol") return std::make_unique<PaddedSobolSampler>(spp, seed, randomization);
+        if (type == "sobol") return std::make_unique<SobolSampler>(spp, seed, randomization);
+        if (substitute)
+            warning(loc, "the \"" + type + "\" sampler is not implemented; using \"zsobol\" "
+                         "(Owen-scrambled Sobol with blue-noise pixel ordering) with the same " +
+                             std::to_string(spp) + " samples per pixel");
+        warn_if_not_power_of_two(spp_override > 0 ? nullptr : &loc, spp);
+        return std::make_unique<ZSobolSampler>(spp, seed, randomization);
     }
     throw InputError(loc, "\"" + type + "\": unknown sampler type");
 }
 
 std::unique_ptr<Sampler> create_default_sampler(int seed, int spp_override) {
-    Vec2i grid = stratified_grid(spp_override > 0 ? spp_override : 16);
-    return std::make_unique<StratifiedSampler>(grid.x, grid.y, true, seed);
+    int spp = spp_override > 0 ? spp_override : 16;
+    warn_if_not_power_of_two(nullptr, spp);
+    return std::make_unique<ZSobolSampler>(spp, seed, Randomization::FastOwen);
 }
 
 } // namespace caustica

@@ -1,7 +1,11 @@
 #include "sampler/independent_sampler.h"
+#include "sampler/padded_sobol_sampler.h"
 #include "sampler/sample_hash.h"
 #include "sampler/sampler_factory.h"
+#include "sampler/sobol_sampler.h"
+#include "sampler/sobol_sequence.h"
 #include "sampler/stratified_sampler.h"
+#include "sampler/zsobol_sampler.h"
 
 #include <gtest/gtest.h>
 
@@ -25,6 +29,14 @@ ParsedParameter bool_param(const std::string &name, bool v) {
     p.type = "bool";
     p.name = name;
     p.bools = {v};
+    return p;
+}
+
+ParsedParameter string_param(const std::string &name, const std::string &v) {
+    ParsedParameter p;
+    p.type = "string";
+    p.name = name;
+    p.strings = {v};
     return p;
 }
 
@@ -53,6 +65,17 @@ std::vector<std::unique_ptr<Sampler>> all_samplers(int seed) {
     s.push_back(std::make_unique<IndependentSampler>(16, seed));
     s.push_back(std::make_unique<StratifiedSampler>(4, 4, true, seed));
     s.push_back(std::make_unique<StratifiedSampler>(3, 5, false, seed));
+    for (Randomization r : {Randomization::Owen, Randomization::FastOwen,
+                            Randomization::PermuteDigits, Randomization::None}) {
+        s.push_back(std::make_unique<ZSobolSampler>(16, seed, r));
+        s.push_back(std::make_unique<PaddedSobolSampler>(16, seed, r));
+    }
+    s.push_back(std::make_unique<ZSobolSampler>(8, seed, Randomization::Owen));
+    s.push_back(std::make_unique<ZSobolSampler>(5, seed, Randomization::Owen));
+    s.push_back(std::make_unique<PaddedSobolSampler>(7, seed, Randomization::Owen));
+    // Without randomisation the global Sobol sampler ignores the seed, which the tests vary.
+    s.push_back(std::make_unique<SobolSampler>(16, seed, Randomization::FastOwen));
+    s.push_back(std::make_unique<SobolSampler>(16, seed, Randomization::Owen));
     return s;
 }
 
@@ -90,12 +113,13 @@ TEST(Sampler, StartingAtADimensionContinuesTheSequence) {
 }
 
 TEST(Sampler, ValuesLieInTheUnitInterval) {
+    // Every dimension, past the 64 of the Sobol table too, and sample indices past spp.
     for (auto &s : all_samplers(11)) {
         for (int y = 0; y < 8; ++y)
             for (int x = 0; x < 8; ++x)
                 for (int i = 0; i < 40; ++i) {
                     s->start_pixel_sample({x, y}, i);
-                    for (int d = 0; d < 8; ++d) {
+                    for (int d = 0; d < 25; ++d) {
                         float u = s->get_1d();
                         EXPECT_GE(u, 0.f);
                         EXPECT_LT(u, 1.f);
@@ -217,13 +241,23 @@ TEST(SamplerFactory, CreatesPbrtSamplers) {
     s->start_pixel_sample({0, 0}, 0);
     float u = s->get_1d();
     EXPECT_FLOAT_EQ(u * 6 - int(u * 6), 0.5f);  // no jitter: stratum centres
-    // Low-discrepancy samplers fall back to stratified with the same sample count.
+    // The low-discrepancy samplers: pbrt's default of 16 samples; halton and pmj02bn are
+    // replaced by zsobol.
+    auto is_a = [](const std::unique_ptr<Sampler> &p, auto *type) {
+        return dynamic_cast<std::remove_pointer_t<decltype(type)> *>(p.get()) != nullptr;
+    };
     for (const char *name : {"halton", "sobol", "paddedsobol", "zsobol", "pmj02bn"}) {
         EXPECT_EQ(create_sampler(name, dict({}), loc, 0)->samples_per_pixel(), 16);
         EXPECT_EQ(create_sampler(name, dict({integer_param("pixelsamples", 8)}), loc, 0)
                       ->samples_per_pixel(),
                   8);
     }
+    EXPECT_TRUE(is_a(create_sampler("zsobol", dict({}), loc, 0), (ZSobolSampler *)nullptr));
+    EXPECT_TRUE(is_a(create_sampler("halton", dict({}), loc, 0), (ZSobolSampler *)nullptr));
+    EXPECT_TRUE(is_a(create_sampler("pmj02bn", dict({}), loc, 0), (ZSobolSampler *)nullptr));
+    EXPECT_TRUE(is_a(create_sampler("paddedsobol", dict({}), loc, 0), (PaddedSobolSampler *)nullptr));
+    EXPECT_TRUE(is_a(create_sampler("sobol", dict({}), loc, 0), (SobolSampler *)nullptr));
+    EXPECT_TRUE(is_a(create_default_sampler(0), (ZSobolSampler *)nullptr));
     EXPECT_EQ(create_default_sampler(0)->samples_per_pixel(), 16);
     // The command line's sample count wins.
     EXPECT_EQ(create_sampler("stratified", dict({}), loc, 0, 10)->samples_per_pixel(), 10);
@@ -239,6 +273,68 @@ TEST(SamplerFactory, SeedParameterOverridesTheDefault) {
     auto c = create_sampler("independent", dict({}), loc, 1);
     EXPECT_EQ(sequence(*a, {1, 2}, 0, 6), sequence(*b, {1, 2}, 0, 6));
     EXPECT_NE(sequence(*a, {1, 2}, 0, 6), sequence(*c, {1, 2}, 0, 6));
+}
+
+TEST(SamplerFactory, RandomizationParameterSelectsTheScramble) {
+    set_warnings_enabled(false);
+    SourceLocation loc{"scene.pbrt", 3, 1};
+    for (const char *type : {"zsobol", "paddedsobol", "sobol", "halton"}) {
+        // Each name builds the sampler with that randomisation.
+        for (auto [name, r] : {std::pair{"owen", Randomization::Owen},
+                               std::pair{"fastowen", Randomization::FastOwen},
+                               std::pair{"permutedigits", Randomization::PermuteDigits},
+                               std::pair{"none", Randomization::None}}) {
+            auto params = dict({string_param("randomization", name)});
+            if (std::string(type) == "halton" && r == Randomization::FastOwen) {
+                // As in pbrt-v4, which has no fast Owen scrambling for Halton points.
+                EXPECT_THROW(create_sampler(type, params, loc, 3), InputError);
+                continue;
+            }
+            auto made = create_sampler(type, params, loc, 3);
+            std::unique_ptr<Sampler> expected;
+            if (std::string(type) == "paddedsobol")
+                expected = std::make_unique<PaddedSobolSampler>(16, 3, r);
+            else if (std::string(type) == "sobol")
+                expected = std::make_unique<SobolSampler>(16, 3, r);
+            else
+                expected = std::make_unique<ZSobolSampler>(16, 3, r);
+            EXPECT_EQ(sequence(*made, {4, 7}, 2, 12), sequence(*expected, {4, 7}, 2, 12)) << type << name;
+        }
+        EXPECT_THROW(create_sampler(type, dict({string_param("randomization", "scrambled")}), loc, 0),
+                     InputError);
+    }
+    // pbrt-v4's defaults: fastowen everywhere, also for the default sampler and the
+    // substitutes.
+    for (const char *type : {"zsobol", "halton", "pmj02bn"})
+        EXPECT_EQ(sequence(*create_sampler(type, dict({}), loc, 3), {1, 2}, 0, 9),
+                  sequence(*std::make_unique<ZSobolSampler>(16, 3, Randomization::FastOwen), {1, 2}, 0, 9));
+    EXPECT_EQ(sequence(*create_sampler("paddedsobol", dict({}), loc, 3), {1, 2}, 0, 9),
+              sequence(*std::make_unique<PaddedSobolSampler>(16, 3, Randomization::FastOwen), {1, 2}, 0, 9));
+    EXPECT_EQ(sequence(*create_sampler("sobol", dict({}), loc, 3), {1, 2}, 0, 9),
+              sequence(*std::make_unique<SobolSampler>(16, 3, Randomization::FastOwen), {1, 2}, 0, 9));
+    EXPECT_EQ(sequence(*create_default_sampler(3), {1, 2}, 0, 9),
+              sequence(*std::make_unique<ZSobolSampler>(16, 3, Randomization::FastOwen), {1, 2}, 0, 9));
+    set_warnings_enabled(true);
+}
+
+TEST(SamplerFactory, WarnsAboutSubstitutesAndNonPowerOfTwoCounts) {
+    SourceLocation loc{"scene.pbrt", 3, 1};
+    auto warnings_of = [&](const std::string &type, std::vector<ParsedParameter> params, int spp) {
+        testing::internal::CaptureStderr();
+        create_sampler(type, dict(std::move(params)), loc, 0, spp);
+        return testing::internal::GetCapturedStderr();
+    };
+    std::string halton = warnings_of("halton", {}, 0);
+    EXPECT_NE(halton.find("scene.pbrt:3:1: warning"), std::string::npos) << halton;
+    EXPECT_NE(halton.find("\"halton\""), std::string::npos) << halton;
+    EXPECT_NE(halton.find("\"zsobol\""), std::string::npos) << halton;
+    EXPECT_NE(warnings_of("pmj02bn", {}, 0).find("\"zsobol\""), std::string::npos);
+    EXPECT_EQ(warnings_of("zsobol", {}, 0), "");
+    EXPECT_EQ(warnings_of("zsobol", {integer_param("pixelsamples", 64)}, 0), "");
+    EXPECT_NE(warnings_of("zsobol", {integer_param("pixelsamples", 12)}, 0).find("power-of-two"),
+              std::string::npos);
+    EXPECT_NE(warnings_of("zsobol", {}, 12).find("power-of-two"), std::string::npos);
+    EXPECT_EQ(warnings_of("paddedsobol", {integer_param("pixelsamples", 12)}, 0), "");
 }
 
 TEST(SamplerFactory, RejectsBadInput) {
