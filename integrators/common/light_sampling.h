@@ -8,6 +8,7 @@
 
 namespace caustica {
 
+class Medium;
 class Scene;
 struct SurfaceInteraction;
 
@@ -19,13 +20,22 @@ float light_pdf(const Scene &scene, const Light &light, const LightSampleContext
 // hits with the complementary MIS weight), or relies on light sampling alone.
 enum class DirectLighting { WeightedAgainstBsdfSampling, LightSamplingOnly };
 
-// One light sample: the contribution f * Le * |cos| / pdf, before the path throughput,
+// One light sample: the contribution f * Le * |cos| * T / pdf, before the path throughput,
 // weighted against BSDF sampling with the power heuristic unless light sampling is the only
-// strategy. Shadow rays are counted in rays.
+// strategy. T is the transmittance of the shadow ray, which leaves si into the medium on the
+// side of the light (`medium` is the one the path arrived in). Shadow rays are counted in rays.
 SampledSpectrum sample_direct_lighting(const Scene &scene, const SurfaceInteraction &si,
                                        const BSDF &bsdf, const LightSampleContext &ctx,
                                        const SampledWavelengths &lambda, Sampler &sampler,
                                        uint64_t &rays, TransportMode mode = TransportMode::Radiance,
-                                       DirectLighting strategy = DirectLighting::WeightedAgainstBsdfSampling);
+                                       DirectLighting strategy = DirectLighting::WeightedAgainstBsdfSampling,
+                                       const Medium *medium = nullptr);
+
+// The same at a scattering point p inside `medium`, with its phase function in place of the
+// BSDF (and no cosine); wo points back along the path.
+SampledSpectrum sample_direct_lighting_in_medium(const Scene &scene, Vec3f p, Vec3f wo, const Medium &medium,
+                                                 const SampledWavelengths &lambda, Sampler &sampler,
+                                                 uint64_t &rays,
+                                                 DirectLighting strategy = DirectLighting::WeightedAgainstBsdfSampling);
 
 } // namespace caustica

@@ -3,7 +3,9 @@
 #include "core/sampling.h"
 #include "geometry/interaction.h"
 #include "integrators/common/light_sampling.h"
+#include "integrators/common/path_segment.h"
 #include "integrators/common/tile_renderer.h"
+#include "media/medium_interface.h"
 #include "scene/scene.h"
 
 namespace caustica {
@@ -25,22 +27,47 @@ struct PathState {
     float bsdf_pdf = 0;          // pdf of the last BSDF sample, for MIS on emitters hit
     LightSampleContext prev_ctx; // where that sample was taken
     const Material *absorbing_interior = nullptr;
+    const Medium *medium = nullptr; // the participating medium the ray travels through
 };
+
+// Russian roulette after the first bounces; false when the path ends.
+bool russian_roulette(PathState &st, int depth, Sampler &sampler) {
+    SampledSpectrum rr_beta = st.beta * st.eta_scale;
+    if (rr_beta.max_value() < 1 && depth > 1) {
+        float q = std::max(0.f, 1 - rr_beta.max_value());
+        if (sampler.get_1d() < q) return false;
+        st.beta /= 1 - q;
+    }
+    return !st.beta.is_black();
+}
 
 SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWavelengths &lambda,
                            Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
     PathState st;
+    st.medium = scene.camera_medium;
     int depth = 0;
     while (true) {
         SurfaceInteraction si;
         ++rays;
         bool hit = scene.intersect(ray, &si);
 
-        // Beer-Lambert absorption along a segment inside an absorbing dielectric.
-        if (st.absorbing_interior) {
-            float dist = hit ? si.t * length(ray.d) : Infinity;
-            st.beta *= exp(-st.absorbing_interior->interior_sigma_a(lambda) * dist);
-            if (st.beta.is_black()) break;
+        PathSegment segment = traverse_segment(st.medium, st.absorbing_interior,
+                                               hit ? si.t * length(ray.d) : Infinity, lambda, sampler);
+        st.beta *= segment.weight;
+        if (st.beta.is_black()) break;
+        if (segment.scattered) {
+            // A scattering event in the medium: light sampling and phase-function sampling,
+            // combined by MIS as at a surface.
+            if (depth++ == max_depth) break;
+            const Vec3f wo = -normalize(ray.d), p = ray.o - wo * segment.t;
+            st.L += st.beta * sample_direct_lighting_in_medium(scene, p, wo, *st.medium, lambda, sampler, rays);
+            PhaseSample ps = st.medium->phase().sample_p(wo, sampler.get_2d());
+            st.bsdf_pdf = ps.p;
+            st.specular_bounce = false;
+            st.prev_ctx = LightSampleContext{p, {}, {}};
+            ray = Ray{p, ps.wi, Infinity};
+            if (!russian_roulette(st, depth, sampler)) break;
+            continue;
         }
 
         if (!hit) {
@@ -67,6 +94,7 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWa
 
         if (!si.material) {
             // A medium boundary without a surface: continue straight through.
+            st.medium = medium_after(si, ray.d, st.medium);
             ray = si.spawn_ray(ray.d);
             continue;
         }
@@ -74,6 +102,7 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWa
 
         BSDF bsdf = si.material->get_bsdf(si, lambda, scratch);
         if (!bsdf) {
+            st.medium = medium_after(si, ray.d, st.medium);
             ray = si.spawn_ray(ray.d);
             continue;
         }
@@ -81,7 +110,9 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWa
         const LightSampleContext ctx{si.p, si.n, si.shading.n};
 
         if (is_non_specular(bsdf.flags()))
-            st.L += st.beta * sample_direct_lighting(scene, si, bsdf, ctx, lambda, sampler, rays);
+            st.L += st.beta * sample_direct_lighting(scene, si, bsdf, ctx, lambda, sampler, rays,
+                                                     TransportMode::Radiance,
+                                                     DirectLighting::WeightedAgainstBsdfSampling, st.medium);
 
         float u = sampler.get_1d();
         auto bs = bsdf.sample_f(wo, u, sampler.get_2d(), TransportMode::Radiance);
@@ -99,15 +130,9 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWa
             if (si.material->has_interior_absorption())
                 st.absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
         }
+        st.medium = medium_after(si, bs->wi, st.medium);
         ray = si.spawn_ray(bs->wi);
-
-        SampledSpectrum rr_beta = st.beta * st.eta_scale;
-        if (rr_beta.max_value() < 1 && depth > 1) {
-            float q = std::max(0.f, 1 - rr_beta.max_value());
-            if (sampler.get_1d() < q) break;
-            st.beta /= 1 - q;
-        }
-        if (st.beta.is_black()) break;
+        if (!russian_roulette(st, depth, sampler)) break;
     }
     return st.L;
 }

@@ -11,6 +11,8 @@
 
 namespace caustica {
 
+class Medium;
+
 enum class LightType {
     DeltaPosition,  // point, spot
     DeltaDirection, // distant
@@ -74,6 +76,15 @@ class Light {
     virtual std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2,
                                                    const SampledWavelengths &lambda) const = 0;
     virtual void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const = 0;
+
+    // The medium around the light (the outside medium of the MediumInterface in effect where it
+    // was declared), in which its light paths start; null for vacuum. An area light's paths
+    // start in the medium on the side of its shape they leave by, when the shape is a transition.
+    const Medium *medium() const { return medium_; }
+    void set_medium(const Medium *medium) { medium_ = medium; }
+
+  private:
+    const Medium *medium_ = nullptr;
 };
 
 using LightPtr = std::shared_ptr<Light>;

@@ -10,6 +10,7 @@
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "materials/material.h"
+#include "media/medium_interface.h"
 #include "params/parameters.h"
 #include "sampler/sampler.h"
 
@@ -29,6 +30,7 @@ struct SceneFeatures {
     // (light - specular - diffuse) paths, which camera paths find only by chance.
     bool caustic_paths = false;
     bool media = false;
+    bool medium_boundaries = false;      // shapes without a material, which rays pass through
     bool subsurface = false;
     bool visible_emitters = false;       // area or infinite lights the camera can see
     bool absorbing_interiors = false;
@@ -54,6 +56,8 @@ class Scene {
     std::vector<LightPtr> lights;
     std::vector<const Light *> infinite_lights;
     std::unique_ptr<PowerLightSampler> light_sampler;
+    // The medium around the camera (the outside medium in effect at the Camera directive).
+    const Medium *camera_medium = nullptr;
 
     std::string integrator_name;         // Caustica's name: "pt", "lt", ...
     std::string integrator_reason;       // why `auto` chose it (empty when it was named)
@@ -73,6 +77,8 @@ class Scene {
     // Keeps what the lights and primitives point to alive for the scene's lifetime.
     std::vector<MaterialPtr> materials;
     std::vector<std::shared_ptr<const ShapeGroup>> shape_groups;
+    std::vector<MediumPtr> media;
+    std::vector<std::unique_ptr<MediumInterface>> medium_interfaces;
 };
 
 // The integrator `--integrator auto` picks for a scene with these features, and why.

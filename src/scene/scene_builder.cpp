@@ -6,6 +6,7 @@
 #include "film/filter.h"
 #include "lights/light_factory.h"
 #include "materials/material_factory.h"
+#include "media/medium_factory.h"
 #include "parser/scene_description.h"
 #include "sampler/sampler_factory.h"
 #include "geometry/shape_factory.h"
@@ -151,6 +152,31 @@ void create_textures(const SceneDescription &d, NamedTextures &textures) {
     }
 }
 
+using MediumTable = std::map<std::string, const Medium *>;
+
+MediumTable create_media(const SceneDescription &d, Scene &scene) {
+    MediumTable table;
+    for (const MediumEntity &m : d.media) {
+        scene.media.push_back(create_medium(m.type, m.params, m.loc));
+        table[m.name] = scene.media.back().get();
+    }
+    scene.medium_count = d.media.size();
+    return table;
+}
+
+// An empty name is vacuum; the parser has checked that every other name is defined.
+const Medium *find_medium(const MediumTable &media, const std::string &name) {
+    return name.empty() ? nullptr : media.at(name);
+}
+
+// The interface of a shape, or null when both sides are the same medium (see medium_interface.h).
+const MediumInterface *interface_for(const ShapeEntity &s, const MediumTable &media, Scene &scene) {
+    MediumInterface mi{find_medium(media, s.inside_medium), find_medium(media, s.outside_medium)};
+    if (!mi.is_transition()) return nullptr;
+    scene.medium_interfaces.push_back(std::make_unique<MediumInterface>(mi));
+    return scene.medium_interfaces.back().get();
+}
+
 struct MaterialTable {
     std::vector<MaterialPtr> anonymous;
     std::map<std::string, MaterialPtr> named;
@@ -186,15 +212,19 @@ const Material *material_for(const ShapeEntity &s, const MaterialTable &table) {
     return default_material.get();
 }
 
-void add_shapes(const SceneDescription &d, const MaterialTable &materials, Scene &scene) {
+void add_shapes(const SceneDescription &d, const MaterialTable &materials, const MediumTable &media,
+                Scene &scene) {
     for (const ShapeEntity &s : d.shapes) {
         auto group = create_shape(s.type, s.render_from_object, s.reverse_orientation, s.params, s.loc);
         if (!group) continue;
         PrimitiveAttributes attrs;
         attrs.material = material_for(s, materials);
+        attrs.medium_interface = interface_for(s, media, scene);
+        scene.features.medium_boundaries |= attrs.material == nullptr;
         if (s.area_light_index >= 0) {
             const SceneEntity &area = d.area_lights.at(s.area_light_index);
             for (LightPtr &light : create_area_lights(area.type, area.params, group->shapes(), area.loc)) {
+                light->set_medium(find_medium(media, s.outside_medium));
                 attrs.area_lights.push_back(light.get());
                 scene.lights.push_back(std::move(light));
             }
@@ -206,7 +236,8 @@ void add_shapes(const SceneDescription &d, const MaterialTable &materials, Scene
     }
 }
 
-void add_instances(const SceneDescription &d, const MaterialTable &materials, Scene &scene) {
+void add_instances(const SceneDescription &d, const MaterialTable &materials, const MediumTable &media,
+                   Scene &scene) {
     std::map<std::string, int> prototypes;
     for (const InstanceDefinition &def : d.instances) {
         std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> members;
@@ -218,6 +249,8 @@ void add_instances(const SceneDescription &d, const MaterialTable &materials, Sc
                                "is instanced without emission");
             PrimitiveAttributes attrs;
             attrs.material = material_for(s, materials);
+            attrs.medium_interface = interface_for(s, media, scene);
+            scene.features.medium_boundaries |= attrs.material == nullptr;
             scene.triangle_count += group->triangle_count();
             scene.shape_groups.push_back(group);
             members.emplace_back(std::move(group), std::move(attrs));
@@ -233,10 +266,12 @@ void add_instances(const SceneDescription &d, const MaterialTable &materials, Sc
     }
 }
 
-void add_lights(const SceneDescription &d, Scene &scene) {
+void add_lights(const SceneDescription &d, const MediumTable &media, Scene &scene) {
     for (const LightEntity &l : d.lights) {
         LightPtr light = create_light(l.type, l.render_from_object, l.params, l.loc);
-        if (light) scene.lights.push_back(std::move(light));
+        if (!light) continue;
+        light->set_medium(find_medium(media, l.medium));
+        scene.lights.push_back(std::move(light));
     }
     for (const LightPtr &light : scene.lights)
         if (light->type() == LightType::Infinite) scene.infinite_lights.push_back(light.get());
@@ -250,7 +285,7 @@ void analyse_features(const SceneDescription &d, Scene &scene) {
         f.subsurface |= m->has_subsurface();
         f.absorbing_interiors |= m->has_interior_absorption();
     }
-    f.media = !d.media.empty();
+    f.media = !scene.media.empty();
     f.visible_emitters = !scene.lights.empty();
     bool non_specular_surfaces = false;
     for (const MaterialPtr &m : scene.materials) non_specular_surfaces |= m->has_non_specular_lobe();
@@ -298,14 +333,11 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     create_textures(d, textures);
     scene->texture_count = d.textures.size();
     MaterialTable materials = create_materials(d, textures, *scene);
-    add_shapes(d, materials, *scene);
-    add_instances(d, materials, *scene);
-    add_lights(d, *scene);
-    if (!d.media.empty()) {
-        scene->medium_count = d.media.size();
-        warning(d.media.front().loc, "participating media are parsed but not rendered yet; "
-                                     "media are ignored");
-    }
+    MediumTable media = create_media(d, *scene);
+    scene->camera_medium = find_medium(media, d.camera.medium);
+    add_shapes(d, materials, media, *scene);
+    add_instances(d, materials, media, *scene);
+    add_lights(d, media, *scene);
 
     scene->geometry.commit();
     Bounds3f bounds = scene->geometry.bounds();

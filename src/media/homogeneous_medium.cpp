@@ -1,0 +1,68 @@
+#include "media/homogeneous_medium.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace caustica {
+
+namespace {
+
+// exp(-sigma_t d) per wavelength, with a clear wavelength (sigma_t = 0) transmitting fully even
+// over an infinite distance (where the product would be 0 * inf).
+SampledSpectrum beer_lambert(const SampledSpectrum &sigma_t, float distance) {
+    SampledSpectrum T;
+    for (int i = 0; i < NumWavelengths; ++i)
+        T[i] = sigma_t[i] > 0 ? std::exp(-sigma_t[i] * distance) : 1.f;
+    return T;
+}
+
+} // namespace
+
+HomogeneousMedium::HomogeneousMedium(SpectrumPtr sigma_a, SpectrumPtr sigma_s, float scale, float g)
+    : sigma_a_(std::move(sigma_a)), sigma_s_(std::move(sigma_s)), scale_(scale), phase_(g) {}
+
+SampledSpectrum HomogeneousMedium::sigma_a(const SampledWavelengths &lambda) const {
+    return sigma_a_->sample(lambda) * scale_;
+}
+
+SampledSpectrum HomogeneousMedium::sigma_s(const SampledWavelengths &lambda) const {
+    return sigma_s_->sample(lambda) * scale_;
+}
+
+SampledSpectrum HomogeneousMedium::transmittance(float distance, const SampledWavelengths &lambda) const {
+    return beer_lambert(sigma_a(lambda) + sigma_s(lambda), distance);
+}
+
+MediumEvent HomogeneousMedium::sample_distance(float t_max, const SampledWavelengths &lambda, float u_channel,
+                                               float u_distance) const {
+    const SampledSpectrum sigma_s_lambda = sigma_s(lambda);
+    const SampledSpectrum sigma_t = sigma_a(lambda) + sigma_s_lambda;
+    // The wavelengths still carried by the path form the mixture (see medium.h).
+    const int carried = lambda.secondary_terminated() ? 1 : NumWavelengths;
+    const int channel = std::min(int(u_channel * carried), carried - 1);
+    const float t = sigma_t[channel] > 0 ? -std::log1p(-u_distance) / sigma_t[channel] : Infinity;
+
+    MediumEvent event;
+    if (t < t_max) {
+        // Density of t: the average over the mixture of sigma_t,k exp(-sigma_t,k t).
+        SampledSpectrum T = beer_lambert(sigma_t, t);
+        float density = 0;
+        for (int k = 0; k < carried; ++k) density += sigma_t[k] * T[k];
+        density /= carried;
+        event.scattered = true;
+        event.t = t;
+        if (density > 0) event.weight = sigma_s_lambda * T / density;
+    } else {
+        // Probability of passing t_max: the average of the mixture's transmittances.
+        SampledSpectrum T = beer_lambert(sigma_t, t_max);
+        float probability = 0;
+        for (int k = 0; k < carried; ++k) probability += T[k];
+        probability /= carried;
+        event.t = t_max;
+        if (probability > 0) event.weight = T / probability;
+    }
+    for (int k = carried; k < NumWavelengths; ++k) event.weight[k] = 0;
+    return event;
+}
+
+} // namespace caustica
