@@ -40,7 +40,12 @@ MediumEvent HomogeneousMedium::sample_distance(float t_max, const SampledWavelen
     // The wavelengths still carried by the path form the mixture (see medium.h).
     const int carried = lambda.secondary_terminated() ? 1 : NumWavelengths;
     const int channel = std::min(int(u_channel * carried), carried - 1);
-    const float t = sigma_t[channel] > 0 ? -std::log1p(-u_distance) / sigma_t[channel] : Infinity;
+    float t = sigma_t[channel] > 0 ? -std::log1p(-u_distance) / sigma_t[channel] : Infinity;
+    // A medium that only absorbs (at the carried wavelengths) cannot scatter: weighting by the
+    // transmittance instead of sampling an absorption event removes all the variance.
+    bool scatters = false;
+    for (int k = 0; k < carried; ++k) scatters |= sigma_s_lambda[k] > 0;
+    if (!scatters) t = Infinity;
 
     MediumEvent event;
     if (t < t_max) {
@@ -53,11 +58,12 @@ MediumEvent HomogeneousMedium::sample_distance(float t_max, const SampledWavelen
         event.t = t;
         if (density > 0) event.weight = sigma_s_lambda * T / density;
     } else {
-        // Probability of passing t_max: the average of the mixture's transmittances.
+        // Probability of passing t_max: the average of the mixture's transmittances (one when
+        // the medium cannot scatter).
         SampledSpectrum T = beer_lambert(sigma_t, t_max);
         float probability = 0;
         for (int k = 0; k < carried; ++k) probability += T[k];
-        probability /= carried;
+        probability = scatters ? probability / carried : 1;
         event.t = t_max;
         if (probability > 0) event.weight = T / probability;
     }

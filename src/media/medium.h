@@ -11,7 +11,8 @@
 // hero, each event is unbiased on its own and no path-level ratio needs to be carried (pbrt-v4's
 // r_u), which keeps light vertices and photons small; and since each component is one of the
 // mixture's terms, every weight is at most NumWavelengths * sigma_s / sigma_t <= 4. After
-// terminate_secondary() only the hero is sampled and weighted.
+// terminate_secondary() only the hero is sampled and weighted. A medium that does not scatter at
+// the carried wavelengths samples nothing and weights by the transmittance.
 #pragma once
 
 #include "media/phase_function.h"
