@@ -3,9 +3,12 @@
 #include "camera/camera.h"
 #include "core/error.h"
 #include "integrators/bdpt/mis_weight.h"
+#include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/splat_scale.h"
 #include "integrators/common/tile_renderer.h"
+#include "integrators/common/transmittance.h"
+#include "media/medium_interface.h"
 #include "scene/scene.h"
 
 #include <new>
@@ -34,24 +37,42 @@ struct SubpathContext {
 
 // Extends the subpath whose last vertex is path[count - 1] by following ray, whose direction
 // was sampled there with solid-angle density pdf_fwd, until max_count vertices exist; returns the
-// new count. beta is the throughput carried by the ray. Camera subpaths (Radiance) that leave
-// the scene end in a vertex at infinity when there are environment lights to receive.
+// new count. beta is the throughput carried by the ray, medium the one it starts in. Camera
+// subpaths (Radiance) that leave the scene end in a vertex at infinity when there are environment
+// lights to receive.
 int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float pdf_fwd,
-                TransportMode mode, PathVertex *path, int count, int max_count) {
+                TransportMode mode, const Medium *medium, PathVertex *path, int count, int max_count) {
     const Scene &scene = ctx.scene;
+    Sampler &sampler = ctx.sample.sampler;
     const Material *absorbing_interior = nullptr;
     while (count < max_count) {
         SurfaceInteraction si;
         ++ctx.sample.rays;
         bool hit = scene.intersect(ray, &si);
-        if (absorbing_interior) {
-            // Beer-Lambert absorption over the segment (as the path tracer does); a ray
-            // leaving to infinity inside an absorber is absorbed entirely.
-            if (!hit) break;
-            beta *= exp(-absorbing_interior->interior_sigma_a(ctx.lambda) * (si.t * length(ray.d)));
-            if (beta.is_black()) break;
-        }
+        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
+                                               ctx.lambda, sampler);
+        beta *= segment.weight;
+        if (beta.is_black()) break;
         PathVertex &prev = path[count - 1];
+        if (segment.scattered) {
+            // A medium vertex. Its phase function is sampled exactly (value = density), so the
+            // throughput is unchanged, and by its symmetry the reverse density is the same.
+            PathVertex &v = path[count++];
+            v = PathVertex{};
+            v.type = PathVertexType::Medium;
+            v.medium = medium;
+            v.si.wo = -normalize(ray.d);
+            v.si.p = ray.o - v.si.wo * segment.t;
+            v.beta = beta;
+            v.pdf_fwd = prev.convert_density(pdf_fwd, v);
+            if (count == max_count) break;
+            PhaseSample ps = medium->phase().sample_p(v.si.wo, sampler.get_2d());
+            if (!(ps.p > 0)) break;
+            pdf_fwd = ps.p;
+            prev.pdf_rev = v.convert_density(ps.p, prev);
+            ray = Ray{v.p(), ps.wi, Infinity};
+            continue;
+        }
         if (!hit) {
             if (mode == TransportMode::Radiance && !scene.infinite_lights.empty()) {
                 PathVertex &v = path[count++];
@@ -66,11 +87,13 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
         }
         if (!si.material) {
             // A medium boundary without a surface: continue straight through.
+            medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);
             continue;
         }
         BSDF bsdf = si.material->get_bsdf(si, ctx.lambda, ctx.sample.scratch);
         if (!bsdf) {
+            medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);
             continue;
         }
@@ -79,11 +102,11 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
         v.type = PathVertexType::Surface;
         v.si = si;
         v.bsdf = bsdf;
+        v.medium = medium;
         v.beta = beta;
         v.pdf_fwd = prev.convert_density(pdf_fwd, v);
         if (count == max_count) break;
 
-        Sampler &sampler = ctx.sample.sampler;
         float u = sampler.get_1d();
         auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), mode);
         if (!bs) break;
@@ -106,6 +129,7 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
         if (bs->is_transmission() && si.material->has_interior_absorption())
             absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
         path[count - 2].pdf_rev = v.convert_density(pdf_rev, path[count - 2]);
+        medium = medium_after(si, bs->wi, medium);
         ray = si.spawn_ray(bs->wi);
         if (beta.is_black()) break;
     }
@@ -119,11 +143,12 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
     lens = PathVertex{};
     lens.type = PathVertexType::Camera;
     lens.si.p = camera_ray.ray.o;
+    lens.medium = ctx.scene.camera_medium;
     lens.beta = camera_ray.weight;
     float pdf_pos, pdf_dir;
     ctx.scene.camera->pdf_we(camera_ray.ray, &pdf_pos, &pdf_dir);
-    return random_walk(ctx, camera_ray.ray, camera_ray.weight, pdf_dir, TransportMode::Radiance, path,
-                       1, max_count);
+    return random_walk(ctx, camera_ray.ray, camera_ray.weight, pdf_dir, TransportMode::Radiance, lens.medium,
+                       path, 1, max_count);
 }
 
 // The light subpath: a light chosen by power, an emitted ray, then scattering vertices.
@@ -144,13 +169,15 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     origin.at_infinity = light.type() == LightType::Infinite || light.type() == LightType::DeltaDirection;
     origin.si.p = les->ray.o;
     origin.si.n = origin.si.shading.n = les->n;
+    // Light paths start in the light's medium (for an area light, that on its shape's outside).
+    origin.medium = light.medium();
     origin.beta = les->L / (chosen->pmf * les->pdf_pos);
     origin.pdf_fwd = chosen->pmf * les->pdf_pos;
 
     const Vec3f d = normalize(les->ray.d);
     const float cos_origin = origin.on_surface() ? abs_dot(les->n, d) : 1.f;
     int count = random_walk(ctx, les->ray, origin.beta * (cos_origin / les->pdf_dir), les->pdf_dir,
-                            TransportMode::Importance, path, 1, max_count);
+                            TransportMode::Importance, origin.medium, path, 1, max_count);
     if (origin.at_infinity) {
         // Rays from infinity start on a disk across the scene: the first vertex's area density
         // is the disk's times the cosine there (no distance falloff), and the origin's density is
@@ -166,9 +193,12 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     return count;
 }
 
-bool visible(const Scene &scene, const PathVertex &a, const PathVertex &b, uint64_t &rays) {
-    ++rays;
-    return !scene.occluded(spawn_ray_to(a.p(), a.ng(), b.p(), b.ng()));
+// The fraction of light that travels between two vertices: zero when a surface is in the way,
+// else the transmittance of the media along the segment.
+SampledSpectrum connection_transmittance(const Scene &scene, const PathVertex &a, const PathVertex &b,
+                                         const SampledWavelengths &lambda, uint64_t &rays) {
+    return transmittance(scene, spawn_ray_to(a.p(), a.ng(), b.p(), b.ng()), a.medium_towards(b.p() - a.p()),
+                         lambda, rays);
 }
 
 struct Connection {
@@ -202,6 +232,7 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         sampled = PathVertex{};
         sampled.type = PathVertexType::Camera;
         sampled.si.p = cs->p_lens;
+        sampled.medium = scene.camera_medium;
         sampled.beta = cs->We / cs->pdf;
         if (qs.type == PathVertexType::Light) {
             // The light point itself (s = 1): emission towards the lens, with the cosine at
@@ -209,11 +240,11 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
             L = qs.light->L(qs.p(), qs.ng(), Vec2f{}, cs->wi, ctx.lambda) *
                 (abs_dot(qs.ng(), cs->wi) / qs.pdf_fwd);
         } else {
-            L = qs.beta * qs.bsdf.f(qs.si.wo, cs->wi, TransportMode::Importance) *
-                importance_cosine(qs.si, qs.si.wo, cs->wi);
+            L = qs.beta * qs.f(cs->wi, TransportMode::Importance) * qs.cosine(cs->wi, TransportMode::Importance);
         }
         L *= sampled.beta;
-        if (L.is_black() || !visible(scene, sampled, qs, rays)) return c;
+        if (L.is_black()) return c;
+        L *= connection_transmittance(scene, sampled, qs, ctx.lambda, rays);
         c.splat = true;
         c.p_raster = cs->p_raster;
     } else if (s == 1) {
@@ -235,25 +266,26 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         sampled.si.n = sampled.si.shading.n = ls->is_infinite ? Vec3f{} : ls->n_light;
         sampled.beta = ls->L / (chosen->pmf * ls->pdf);
         sampled.pdf_fwd = sampled.pdf_light_origin(scene, pt);
-        L = pt.beta * pt.bsdf.f(pt.si.wo, ls->wi, TransportMode::Radiance) *
-            (abs_dot(ls->wi, pt.ns())) * sampled.beta;
+        L = pt.beta * pt.f(ls->wi, TransportMode::Radiance) * pt.cosine(ls->wi, TransportMode::Radiance) *
+            sampled.beta;
         if (L.is_black()) return c;
-        ++rays;
+        // A medium vertex has no normal, so its rays start at the point itself.
         Ray shadow = ls->is_infinite ? pt.si.spawn_ray(ls->wi) : pt.si.spawn_ray_to(ls->p_light, ls->n_light);
-        if (scene.occluded(shadow)) return c;
+        L *= transmittance(scene, shadow, pt.medium_towards(ls->wi), ctx.lambda, rays);
     } else {
-        // Join two scattering vertices with a shadow ray: both BSDFs and the geometry term
-        // (shading-normal cosines, adjoint-corrected on the light side, over distance^2).
+        // Join two scattering vertices with a shadow ray: both scattering functions and the
+        // geometry term (shading-normal cosines, adjoint-corrected on the light side, none at
+        // medium vertices, over distance^2) times the transmittance between them.
         const PathVertex &qs = light_vertices[s - 1], &pt = camera_vertices[t - 1];
         if (!qs.connectible() || !pt.connectible()) return c;
         Vec3f d = pt.p() - qs.p();
         float dist2 = length_squared(d);
         if (dist2 == 0) return c;
         d = d / std::sqrt(dist2);
-        L = qs.beta * qs.bsdf.f(qs.si.wo, d, TransportMode::Importance) *
-            importance_cosine(qs.si, qs.si.wo, d) * pt.bsdf.f(pt.si.wo, -d, TransportMode::Radiance) *
-            (abs_dot(d, pt.ns()) / dist2) * pt.beta;
-        if (L.is_black() || !visible(scene, qs, pt, rays)) return c;
+        L = qs.beta * qs.f(d, TransportMode::Importance) * qs.cosine(d, TransportMode::Importance) *
+            pt.f(-d, TransportMode::Radiance) * (pt.cosine(-d, TransportMode::Radiance) / dist2) * pt.beta;
+        if (L.is_black()) return c;
+        L *= connection_transmittance(scene, qs, pt, ctx.lambda, rays);
     }
     if (L.is_black()) return c;
     c.L = L * bdpt_mis_weight(scene, light_vertices, camera_vertices, sampled, s, t);

@@ -6,12 +6,18 @@
 // between the two subpaths' ends. The strategies are combined with the power heuristic, their
 // weights computed from per-vertex area densities (Veach 1997, section 10.2.1).
 //
+// Participating media (pbrt-v4's BDPT with media): both subpaths sample free-flight distances
+// along their segments (traverse_segment) and may scatter inside a medium, making medium
+// vertices, which connect like surface vertices with the phase function in place of the BSDF and
+// no cosine. Every connection, to the lens and to a sampled light point included, is weighted by
+// the transmittance of the media it crosses, and is zero when a surface blocks it.
+//
 // One set of hero wavelengths serves both subpaths of a sample; a dispersive refraction on
 // either keeps only the hero wavelength for every contribution of that sample. Beer-Lambert
 // absorption inside dielectrics multiplies the throughput of the subpath segments that cross
-// them; connection segments are not attenuated (a connection from inside a closed dielectric to
-// a point outside it is blocked by its boundary anyway). There is no Russian roulette (as in
-// pbrt-v4): subpath lengths are bounded by "maxdepth" alone.
+// them; connection segments are not attenuated by it (a connection from inside a closed
+// dielectric to a point outside it is blocked by its boundary anyway). There is no Russian
+// roulette (as in pbrt-v4): subpath lengths are bounded by "maxdepth" alone.
 #pragma once
 
 #include "integrators/integrator.h"

@@ -1,6 +1,7 @@
 #include "integrators/common/path_vertex.h"
 
 #include "camera/camera.h"
+#include "media/medium_interface.h"
 #include "scene/scene.h"
 
 namespace caustica {
@@ -18,8 +19,24 @@ bool PathVertex::connectible() const {
     // connected by sampling a direction (the s = 1 strategy).
     case PathVertexType::Light: return !light || light->type() != LightType::DeltaDirection;
     case PathVertexType::Surface: return bsdf && is_non_specular(bsdf.flags());
+    // Caustica's phase functions are never Dirac deltas (|g| < 1).
+    case PathVertexType::Medium: return true;
     }
     return false;
+}
+
+const Medium *PathVertex::medium_towards(Vec3f w) const {
+    return type == PathVertexType::Surface ? medium_after(si, w, medium) : medium;
+}
+
+SampledSpectrum PathVertex::f(Vec3f w, TransportMode mode) const {
+    if (type == PathVertexType::Medium) return SampledSpectrum(medium->phase().p(si.wo, w));
+    return bsdf.f(si.wo, w, mode);
+}
+
+float PathVertex::cosine(Vec3f w, TransportMode mode) const {
+    if (type == PathVertexType::Medium) return 1;
+    return mode == TransportMode::Radiance ? abs_dot(w, ns()) : importance_cosine(si, si.wo, w);
 }
 
 float PathVertex::convert_density(float pdf, const PathVertex &next) const {
@@ -44,7 +61,8 @@ float PathVertex::pdf(const Scene &scene, const PathVertex *prev, const PathVert
         if (!prev) return 0;
         Vec3f wp = prev->p() - p();
         if (length_squared(wp) == 0) return 0;
-        pdf = bsdf.pdf(normalize(wp), wn);
+        pdf = type == PathVertexType::Medium ? medium->phase().pdf(normalize(wp), wn)
+                                             : bsdf.pdf(normalize(wp), wn);
     }
     return convert_density(pdf, next);
 }

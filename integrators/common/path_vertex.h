@@ -7,11 +7,19 @@
 // Vertices "at infinity" (an environment light, or a distant light) have no position: their
 // densities are kept per unit solid angle instead, and no distance or cosine conversion is
 // applied when a density is expressed at them (pbrt-v4's ConvertDensity does the same).
+//
+// Medium vertices (scattering events inside a participating medium) have no normal: their
+// scattering function is the phase function, with no cosine factor, and converting a density to
+// the area measure at them divides by the squared distance alone (as in pbrt-v4's BDPT). The
+// densities of sampling free-flight distances are left out of every stored density, as in
+// pbrt-v4: every strategy omits them alike, so the MIS weights still sum to one and the
+// estimator stays unbiased.
 #pragma once
 
 #include "geometry/interaction.h"
 #include "lights/light.h"
 #include "materials/bsdf.h"
+#include "media/medium.h"
 
 namespace caustica {
 
@@ -21,6 +29,7 @@ enum class PathVertexType {
     Camera,  // the lens point; si.n is zero (connections to it are not cosine-weighted there)
     Light,   // the first vertex of a light subpath, or where a camera subpath escaped to infinity
     Surface, // a scattering surface; may also carry an area light (si.area_light)
+    Medium,  // a scattering event inside a participating medium (si.p and si.wo only)
 };
 
 struct PathVertex {
@@ -29,9 +38,14 @@ struct PathVertex {
     // functions over their densities (for light subpaths it starts at Le / (pmf * pdf_pos)).
     SampledSpectrum beta{0.f};
     // Position and geometric normal (zero when the vertex is not on a surface: point lights,
-    // the lens, points at infinity); on surface vertices also the shading frame, uv and wo.
+    // the lens, points at infinity, medium vertices); on surface vertices also the shading
+    // frame and uv; on surface and medium vertices wo, towards the subpath's previous vertex.
     SurfaceInteraction si;
     BSDF bsdf;                    // surface vertices only
+    // The participating medium (null: vacuum) the vertex lies in: for a surface vertex the one
+    // the subpath arrived through, for the lens the camera's, for a light point the light's.
+    // Connections leave the vertex in medium_towards(direction).
+    const Medium *medium = nullptr;
     const Light *light = nullptr; // light vertices; null for an escaped camera subpath, whose
                                   // emission is the sum over all infinite lights
     // The BSDF sample that left this vertex was specular: the vertex cannot be connected, and
@@ -53,12 +67,23 @@ struct PathVertex {
     }
     // Whether a deterministic connection to another vertex can have non-zero value.
     bool connectible() const;
+    // The medium a segment leaving this vertex in direction w travels through: the other side
+    // of a surface that separates two media, else the vertex's own medium.
+    const Medium *medium_towards(Vec3f w) const;
+    // Scattering function of a surface or medium vertex from si.wo to the unit direction w: the
+    // BSDF for the given transport mode, or the phase function (the same in both modes).
+    SampledSpectrum f(Vec3f w, TransportMode mode) const;
+    // The cosine that goes with f towards w: |w . ns| in radiance mode, the adjoint-corrected
+    // importance_cosine in importance mode, and 1 at a medium vertex, which has no surface.
+    float cosine(Vec3f w, TransportMode mode) const;
 
     // The density pdf (solid angle at this vertex) expressed in the area measure at next:
-    // times |cos| at next over the squared distance (Veach 1997, eq. 8.10).
+    // times |cos| at next over the squared distance (Veach 1997, eq. 8.10); no cosine when next
+    // is not on a surface (a medium vertex, a point light, the lens).
     float convert_density(float pdf, const PathVertex &next) const;
     // Area density with which this vertex, reached from prev (null for an endpoint), samples
-    // next: the BSDF's or the camera's directional density, or the light's emission density.
+    // next: the BSDF's, the phase function's or the camera's directional density, or the
+    // light's emission density.
     float pdf(const Scene &scene, const PathVertex *prev, const PathVertex &next) const;
     // Area density at v of a ray emitted by this (light) vertex towards it.
     float pdf_light(const Scene &scene, const PathVertex &v) const;

@@ -2,10 +2,15 @@
 
 #include "core/error.h"
 #include "geometry/interaction.h"
+#include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/splat_scale.h"
 #include "integrators/common/tile_renderer.h"
+#include "integrators/common/transmittance.h"
+#include "media/medium_interface.h"
 #include "scene/scene.h"
+
+#include <utility>
 
 namespace caustica {
 
@@ -59,13 +64,43 @@ void connect_light_vertex(const LightPathContext &ctx, const Light &light, const
     if (Le.is_black()) return;
     SampledSpectrum L = Le * cs->We * (abs_dot(les.n, cs->wi) / (light_pmf * les.pdf_pos * cs->pdf));
     if (L.is_black()) return;
-    // Traced from the lens towards the light point: when a two-sided light is seen from the side
-    // opposite to the sampled emission direction, p lies on the wrong side and a ray spawned
-    // from it would start on the emitter; spawn_ray_to moves the target to the lens's side and
-    // stops short of it, whichever side p is on.
-    ++ctx.sample.rays;
-    if (scene.occluded(spawn_ray_to(cs->p_lens, Vec3f{}, p, les.n))) return;
+    // Traced from the lens (in the camera's medium) towards the light point: when a two-sided
+    // light is seen from the side opposite to the sampled emission direction, p lies on the
+    // wrong side and a ray spawned from it would start on the emitter; spawn_ray_to moves the
+    // target to the lens's side and stops short of it, whichever side p is on.
+    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, p, les.n), scene.camera_medium, lambda,
+                       ctx.sample.rays);
     splat(ctx, cs->p_raster, L, lambda);
+}
+
+// Connects a scattering vertex at p, reached with the given throughput, to a sampled lens point
+// (t = 1) and splats the result. scattering(wi) is the vertex's scattering function towards the
+// lens (times the cosine there, at a surface); ray_to_lens(p_lens, wi) the connecting ray from
+// the vertex and the medium it starts in.
+template <typename Scattering, typename RayToLens>
+void connect_to_lens(const LightPathContext &ctx, Vec3f p, const SampledSpectrum &throughput,
+                     const SampledWavelengths &lambda, const Scattering &scattering, const RayToLens &ray_to_lens) {
+    auto cs = ctx.scene.camera->sample_wi(p, ctx.sample.sampler.get_2d(), lambda);
+    if (!cs || !(cs->pdf > 0)) return;
+    SampledSpectrum f = scattering(cs->wi);
+    if (f.is_black()) return;
+    SampledSpectrum L = throughput * f * cs->We / cs->pdf;
+    if (L.is_black()) return;
+    auto [ray, medium] = ray_to_lens(cs->p_lens, cs->wi);
+    L *= transmittance(ctx.scene, ray, medium, lambda, ctx.sample.rays);
+    splat(ctx, cs->p_raster, L, lambda);
+}
+
+// Russian roulette on the throughput after the first bounces; false when the path ends.
+// Importance transport has no 1/eta^2 factor at refraction (Veach 1997 section 5.2), so unlike
+// the path tracer there is no eta scale to undo.
+bool russian_roulette(SampledSpectrum &beta, int depth, Sampler &sampler) {
+    if (beta.max_value() < 1 && depth > 1) {
+        float q = std::max(0.f, 1 - beta.max_value());
+        if (sampler.get_1d() < q) return false;
+        beta /= 1 - q;
+    }
+    return !beta.is_black();
 }
 
 // One light path for the sampler's current (pixel, iteration).
@@ -91,6 +126,8 @@ void trace_light_path(const LightPathContext &ctx) {
     SampledSpectrum flux = les->L * (cos_origin / (sampled->pmf * les->pdf_pos * les->pdf_dir));
     SampledSpectrum beta(1.f);
     const Material *absorbing_interior = nullptr;
+    // The path starts in the light's medium (for an area light, that on its shape's outside).
+    const Medium *medium = light.medium();
     Ray ray = les->ray;
     int depth = 0;
     while (true) {
@@ -98,16 +135,32 @@ void trace_light_path(const LightPathContext &ctx) {
         ++rays;
         bool hit = scene.intersect(ray, &si);
 
-        // Beer-Lambert absorption along a segment inside an absorbing dielectric, tracked as the
-        // path tracer does (a light inside such a dielectric is not detected: paths start clear).
-        if (absorbing_interior) {
-            float dist = hit ? si.t * length(ray.d) : Infinity;
-            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * dist);
-            if (beta.is_black()) break;
+        // Free flight through the medium and absorption inside an absorbing dielectric, as in
+        // the path tracer (a light inside such a dielectric is not detected: paths start clear).
+        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
+                                               lambda, sampler);
+        beta *= segment.weight;
+        if (beta.is_black()) break;
+        if (segment.scattered) {
+            // A scattering event in the medium, which counts as a vertex like a surface one:
+            // connect it to the lens through the medium, then continue by sampling the phase
+            // function, whose value equals its density (beta is unchanged).
+            if (depth++ == ctx.max_depth) break;
+            const Vec3f wo = -normalize(ray.d), p = ray.o - wo * segment.t;
+            const HenyeyGreenstein &phase = medium->phase();
+            connect_to_lens(
+                ctx, p, flux * beta, lambda, [&](Vec3f wi) { return SampledSpectrum(phase.p(wo, wi)); },
+                [&](Vec3f p_lens, Vec3f) { return std::pair{spawn_ray_to(p, Vec3f{}, p_lens), medium}; });
+            PhaseSample ps = phase.sample_p(wo, sampler.get_2d());
+            if (!(ps.p > 0)) break;
+            ray = Ray{p, ps.wi, Infinity};
+            if (!russian_roulette(beta, depth, sampler)) break;
+            continue;
         }
         if (!hit) break;
         if (!si.material) {
             // A medium boundary without a surface: continue straight through.
+            medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);
             continue;
         }
@@ -117,6 +170,7 @@ void trace_light_path(const LightPathContext &ctx) {
 
         BSDF bsdf = si.material->get_bsdf(si, lambda, ctx.sample.scratch);
         if (!bsdf) {
+            medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);
             continue;
         }
@@ -124,19 +178,15 @@ void trace_light_path(const LightPathContext &ctx) {
 
         // Connect this vertex to the lens (t = 1). Specular lobes have zero density towards any
         // given direction, so only non-specular BSDFs can contribute.
-        if (is_non_specular(bsdf.flags())) {
-            auto cs = scene.camera->sample_wi(si.p, sampler.get_2d(), lambda);
-            if (cs && cs->pdf > 0) {
-                SampledSpectrum f = bsdf.f(wo, cs->wi, TransportMode::Importance) *
-                                    importance_cosine(si, wo, cs->wi);
-                if (!f.is_black()) {
-                    SampledSpectrum L = flux * beta * f * cs->We / cs->pdf;
-                    ++rays;
-                    if (!L.is_black() && !scene.occluded(si.spawn_ray_to(cs->p_lens)))
-                        splat(ctx, cs->p_raster, L, lambda);
-                }
-            }
-        }
+        if (is_non_specular(bsdf.flags()))
+            connect_to_lens(
+                ctx, si.p, flux * beta, lambda,
+                [&](Vec3f wi) {
+                    return bsdf.f(wo, wi, TransportMode::Importance) * importance_cosine(si, wo, wi);
+                },
+                [&](Vec3f p_lens, Vec3f wi) {
+                    return std::pair{si.spawn_ray_to(p_lens), medium_after(si, wi, medium)};
+                });
 
         float u = sampler.get_1d();
         auto bs = bsdf.sample_f(wo, u, sampler.get_2d(), TransportMode::Importance);
@@ -150,17 +200,9 @@ void trace_light_path(const LightPathContext &ctx) {
         beta *= bs->f * (importance_cosine(si, wo, bs->wi) / bs->pdf);
         if (bs->is_transmission() && si.material->has_interior_absorption())
             absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        medium = medium_after(si, bs->wi, medium);
         ray = si.spawn_ray(bs->wi);
-
-        // Russian roulette on the throughput. Importance transport has no 1/eta^2 factor at
-        // refraction (Veach 1997 section 5.2), so unlike the path tracer there is no eta scale
-        // to undo.
-        if (beta.max_value() < 1 && depth > 1) {
-            float q = std::max(0.f, 1 - beta.max_value());
-            if (sampler.get_1d() < q) break;
-            beta /= 1 - q;
-        }
-        if (beta.is_black()) break;
+        if (!russian_roulette(beta, depth, sampler)) break;
     }
 }
 

@@ -3,7 +3,10 @@
 // power, and every vertex on a non-specular surface, the point on the light included, is
 // connected to a sampled point of the camera lens and splatted to the film where that
 // connection lands. It renders caustics (light focused by specular surfaces onto diffuse ones)
-// that camera paths find only by chance.
+// that camera paths find only by chance. In participating media the paths also scatter at
+// medium vertices, which are connected to the lens like surface vertices (with the phase
+// function, and no cosine); every connection is weighted by the transmittance of the media it
+// crosses, the camera's own medium included.
 //
 // Not rendered: environment (infinite) lights seen directly, whose "points" are at infinity and
 // cannot be connected to the lens (as in pbrt-v4's lightpath), and anything seen only through

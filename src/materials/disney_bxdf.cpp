@@ -72,6 +72,7 @@ DisneyBxDF::DisneyBxDF(const DisneyParameters &p)
       clearcoat_(p.clearcoat),
       clearcoat_alpha_(clearcoat_alpha(p.clearcoat_gloss)),
       thin_(p.thin),
+      subsurface_(p.subsurface && !p.thin),
       diff_trans_(p.thin ? p.diff_trans : 0),
       flatness_(p.thin ? p.flatness : 0),
       specular_(specular_distribution(p.roughness, p.anisotropic)),
@@ -90,8 +91,8 @@ DisneyBxDF::DisneyBxDF(const DisneyParameters &p)
         tinted_f0_[i] = clamp(normal_incidence_reflectance(eta_[i]) * tint[i], 0.f, 1.f);
 
     bool base = !base_color_.is_black();
-    float lambert_share = 1 - diff_trans_ / 2;
-    diffuse_present_ = dielectric_weight_ > 0 && base && (lambert_share > 0 || roughness_ > 0);
+    lambert_share_ = subsurface_ ? 0 : 1 - diff_trans_ / 2;
+    diffuse_present_ = dielectric_weight_ > 0 && base && (lambert_share_ > 0 || roughness_ > 0);
     sheen_present_ = sheen_weight_ > 0 && !sheen_color_.is_black();
     present_[Diffuse] = diffuse_present_ || sheen_present_;
     present_[DiffuseTransmission] = thin_ && dielectric_weight_ > 0 && diff_trans_ > 0 && base;
@@ -100,9 +101,13 @@ DisneyBxDF::DisneyBxDF(const DisneyParameters &p)
     present_[SpecularBSDF] = !thin_ && specular_bsdf_weight_ > 0;
     present_[ThinTransmission] = thin_ && specular_bsdf_weight_ > 0 && base;
     present_[Clearcoat] = clearcoat_ > 0;
+    present_[Subsurface] = present_[InternalReflection] = subsurface_ && dielectric_weight_ > 0;
 }
 
-bool DisneyBxDF::lobe_present(int lobe, bool coated) const {
+bool DisneyBxDF::lobe_present(int lobe, bool coated, bool inside) const {
+    if (subsurface_ && inside)
+        return (lobe == Subsurface || lobe == InternalReflection || lobe == SpecularBSDF) && present_[lobe];
+    if (lobe == InternalReflection) return false;
     if (lobe == Diffuse) return diffuse_present_ || (coated && sheen_present_);
     if (lobe == Clearcoat) return coated && present_[Clearcoat];
     return present_[lobe];
@@ -119,6 +124,7 @@ BxDFFlags DisneyBxDF::flags() const {
         f = f | (thin_transmission_.effectively_smooth() ? BxDFSpecularTransmission
                                                          : BxDFGlossyTransmission);
     if (present_[Clearcoat]) f = f | BxDFGlossyReflection;
+    if (present_[Subsurface]) f = f | BxDFDiffuseTransmission | BxDFDiffuseReflection;
     return f;
 }
 
@@ -153,7 +159,7 @@ DisneyBxDF::LobeProbabilities DisneyBxDF::lobe_probabilities(Vec3f wo, SampleFla
     allowed[Diffuse] = reflection;
     weight[Diffuse] = dielectric_weight_ + (coated ? sheen_weight_ : 0);
     estimate[Diffuse] = dielectric_weight_ * base_color_.average() *
-                        ((1 - diff_trans_ / 2) * (1 - fv / 2) + roughness_ * (RetroAlbedoAtNormal + fv));
+                        (lambert_share_ * (1 - fv / 2) + roughness_ * (RetroAlbedoAtNormal + fv));
     if (coated) estimate[Diffuse] += sheen_weight_ * sheen_color_.average() * SheenAlbedoScale * fv;
 
     allowed[DiffuseTransmission] = transmission;
@@ -184,10 +190,20 @@ DisneyBxDF::LobeProbabilities DisneyBxDF::lobe_probabilities(Vec3f wo, SampleFla
     weight[Clearcoat] = clearcoat_ / 4;
     estimate[Clearcoat] = clearcoat_ / 4 * fresnel_schlick(ClearcoatF0, cos_o);
 
+    // Light from outside enters with the Lambertian share and returns coloured by the volume;
+    // from inside it leaves with probability 41/42 and is reflected back with 1/42.
+    bool inside = wo.z < 0;
+    allowed[Subsurface] = transmission;
+    weight[Subsurface] = dielectric_weight_;
+    estimate[Subsurface] = dielectric_weight_ * (inside ? 41.f / 42 : base_color_.average() * (1 - fv / 2));
+    allowed[InternalReflection] = reflection;
+    weight[InternalReflection] = dielectric_weight_ / 42;
+    estimate[InternalReflection] = dielectric_weight_ / 42;
+
     LobeProbabilities lobes;
     float total = 0;
     for (int k = 0; k < LobeCount; ++k) {
-        if (!lobe_present(k, coated) || !allowed[k]) continue;
+        if (!lobe_present(k, coated, inside) || !allowed[k]) continue;
         lobes.p[k] = std::max(estimate[k], MinimumSelectionFraction * weight[k]);
         total += lobes.p[k];
     }
@@ -218,7 +234,7 @@ SampledSpectrum DisneyBxDF::diffuse_f(Vec3f wo, Vec3f wi, bool coated) const {
     // that neither flatness nor diffTrans change.
     float rr = 2 * roughness_ * sqr(cos_d);
     float retro = rr * (fl + fv + fl * fv * (rr - 1));
-    float diffuse = dielectric_weight_ * InvPi * ((1 - diff_trans_ / 2) * lambert + retro);
+    float diffuse = dielectric_weight_ * InvPi * (lambert_share_ * lambert + retro);
     return base_color_ * diffuse + sheen;
 }
 
@@ -249,6 +265,19 @@ float DisneyBxDF::clearcoat_f(Vec3f wo, Vec3f wi, bool coated) const {
     return clearcoat_ / 4 * d * f * g / (4 * wo.z * wi.z);
 }
 
+SampledSpectrum DisneyBxDF::subsurface_f(Vec3f wo, Vec3f wi) const {
+    if (!present_[Subsurface]) return {};
+    float crossing = dielectric_weight_ * InvPi;
+    if (wo.z > 0) return SampledSpectrum(wi.z < 0 ? crossing * (1 - schlick_weight(wo.z) / 2) : 0.f);
+    return SampledSpectrum(wi.z > 0 ? crossing * (1 - schlick_weight(wi.z) / 2) : crossing / 42);
+}
+
+float DisneyBxDF::subsurface_pdf(Vec3f wo, Vec3f wi, const LobeProbabilities &lobes) const {
+    if (wo.z > 0) return wi.z < 0 ? lobes.p[Subsurface] * cosine_hemisphere_pdf(-wi.z) : 0;
+    return wi.z > 0 ? lobes.p[Subsurface] * cosine_hemisphere_pdf(wi.z)
+                    : lobes.p[InternalReflection] * cosine_hemisphere_pdf(-wi.z);
+}
+
 SampledSpectrum DisneyBxDF::upper_f(Vec3f wo, Vec3f wi, bool coated) const {
     if (wi.z > 0)
         return diffuse_f(wo, wi, coated) + specular_reflection_f(wo, wi) +
@@ -265,6 +294,10 @@ SampledSpectrum DisneyBxDF::f(Vec3f wo, Vec3f wi, TransportMode mode) const {
         SampledSpectrum s = specular_bsdf_.f(wo, wi, mode) * specular_bsdf_weight_;
         result += same_hemisphere(wo, wi) ? s : s * sqrt_base_color_;
     }
+    if (subsurface_) {
+        result += subsurface_f(wo, wi);
+        if (wo.z < 0) return result;
+    }
     bool coated = this->coated(wo);
     if (wo.z < 0) {
         wo = mirror_z(wo);
@@ -277,18 +310,22 @@ float DisneyBxDF::upper_pdf(Vec3f wo, Vec3f wi, const LobeProbabilities &lobes) 
     float pdf = 0;
     if (wi.z > 0) {
         pdf += lobes.p[Diffuse] * cosine_hemisphere_pdf(wi.z);
-        Vec3f wm = normalize(wo + wi);
-        // Jacobian of the reflection half-vector map: d(wm)/d(wi) = 1 / (4 wo.wm).
-        float jacobian = 1 / (4 * dot(wo, wm));
+        Vec3f h = wo + wi, wm = normalize(h);
+        // Jacobian of the reflection half-vector map: d(wm)/d(wi) = 1 / (4 wo.wm), where
+        // wo.wm = (1 + wo.wi) / |wo + wi| = |wo + wi| / 2 for unit vectors. For nearly opposite
+        // grazing directions the dot product is a cancellation that rounding made negative (a
+        // negative density); the length is accurate. The GGX lobes' visible-normal density
+        // cancels wo.wm altogether (reflection_pdf).
+        float jacobian = 1 / (2 * length(h));
         if (lobes.p[SpecularReflection] > 0 && !specular_.effectively_smooth())
-            pdf += lobes.p[SpecularReflection] * specular_.pdf(wo, wm) * jacobian;
+            pdf += lobes.p[SpecularReflection] * specular_.reflection_pdf(wo, wm);
         if (lobes.p[Clearcoat] > 0)
             pdf += lobes.p[Clearcoat] * gtr1(wm, clearcoat_alpha_) * wm.z * jacobian;
     } else {
         pdf += lobes.p[DiffuseTransmission] * cosine_hemisphere_pdf(-wi.z);
         if (lobes.p[ThinTransmission] > 0 && !thin_transmission_.effectively_smooth()) {
             Vec3f wm = normalize(wo + mirror_z(wi));
-            pdf += lobes.p[ThinTransmission] * thin_transmission_.pdf(wo, wm) / (4 * dot(wo, wm));
+            pdf += lobes.p[ThinTransmission] * thin_transmission_.reflection_pdf(wo, wm);
         }
     }
     return pdf;
@@ -299,6 +336,10 @@ float DisneyBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode mode, SampleFlags flags)
     LobeProbabilities lobes = lobe_probabilities(wo, flags);
     float pdf = 0;
     if (lobes.p[SpecularBSDF] > 0) pdf += lobes.p[SpecularBSDF] * specular_bsdf_.pdf(wo, wi, mode, flags);
+    if (subsurface_) {
+        pdf += subsurface_pdf(wo, wi, lobes);
+        if (wo.z < 0) return pdf;
+    }
     if (wo.z < 0) {
         wo = mirror_z(wo);
         wi = mirror_z(wi);
@@ -335,6 +376,13 @@ std::optional<BSDFSample> DisneyBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tran
             return g;
         }
         s = *g;
+    } else if (lobe == Subsurface || lobe == InternalReflection) {
+        // Cosine-distributed on the side the lobe leads to: the crossing goes to the other
+        // side of wo, the internal reflection stays inside.
+        Vec3f i = sample_cosine_hemisphere(u);
+        bool upper = (lobe == Subsurface) == (wo.z < 0);
+        s.wi = upper ? i : mirror_z(i);
+        s.flags = lobe == Subsurface ? BxDFDiffuseTransmission : BxDFDiffuseReflection;
     } else {
         // The two-sided lobes sample with wo mirrored into the upper hemisphere.
         bool mirrored = wo.z < 0;

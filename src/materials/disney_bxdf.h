@@ -1,7 +1,8 @@
 // The Disney BSDF: Burley 2015, "Extending the Disney BRDF to a BSDF with Integrated Subsurface
 // Scattering" (SIGGRAPH course notes), built on the Disney BRDF of Burley 2012, "Physically-Based
-// Shading at Disney". The subsurface diffusion of the notes is not part of this BxDF: the
-// diffuse lobe is always the BRDF's (what the notes use when scatterDistance is 0).
+// Shading at Disney". With `subsurface` set (a solid with scatterDistance > 0), the Lambertian
+// part of the diffuse lobe is replaced by a path-traced volume (section 2.5): see "Subsurface"
+// below.
 //
 // The BSDF is a blend of three models (the notes' Figure 4), with weights
 //   metallic BRDF     metallic
@@ -38,6 +39,19 @@
 // BSDF). Sheen and clearcoat are layers on the outside: thin surfaces have them on both faces,
 // solids only for light arriving from outside (from inside they would add reflection to total
 // internal reflection, creating energy).
+//
+// Subsurface (random walk, section 2.5). The notes refactor the diffuse lobe (eq. 4) so that its
+// Lambertian part f_Lambert (1 - F_L / 2)(1 - F_V / 2) can be swapped for subsurface scattering
+// while the retro-reflection stays a surface effect. Here that part becomes a crossing of the
+// surface: light from outside enters through a Lambertian transmission lobe
+// (w / pi)(1 - F_V / 2) and walks through the interior medium (DisneyMaterial gives it the
+// coefficients that reflect baseColor); from inside, a walk that reaches the surface leaves
+// through the mirror-image lobe (w / pi)(1 - F_L / 2), where F is Schlick's weight of the
+// OUTSIDE direction, so the pair is reciprocal and the product of the two crossings is eq. 4's
+// edge darkening. The exit lobe's albedo is 41/42; the remaining 1/42 is reflected back inside by
+// a constant (Lambertian) lobe, so the boundary neither creates nor loses energy. w is the
+// dielectric BRDF's blend weight; the crossing is colourless (the colour comes from the volume).
+// From inside only these two lobes and the specular BSDF act.
 //
 // Sampling picks one lobe with probability proportional to an estimate of its directional
 // albedo at wo (any positive choice is unbiased; a good one keeps f |cos| / pdf near the total
@@ -77,6 +91,7 @@ struct DisneyParameters {
     bool thin = false;
     float diff_trans = 0;  // [0, 2], thin surfaces only
     float flatness = 0;    // [0, 1], thin surfaces only
+    bool subsurface = false; // solids only: random-walk subsurface (see above)
 };
 
 class DisneyBxDF final : public BxDF {
@@ -108,7 +123,7 @@ class DisneyBxDF final : public BxDF {
   private:
     // The lobes sampling chooses between.
     enum Lobe { Diffuse, DiffuseTransmission, SpecularReflection, SpecularBSDF, ThinTransmission,
-                Clearcoat, LobeCount };
+                Clearcoat, Subsurface, InternalReflection, LobeCount };
     struct LobeProbabilities {
         float p[LobeCount] = {};
     };
@@ -116,7 +131,11 @@ class DisneyBxDF final : public BxDF {
     // Sheen and clearcoat are layers on the outside: a solid's inside (wo.z < 0) has neither,
     // while both faces of a thin surface are outsides.
     bool coated(Vec3f wo) const { return thin_ || wo.z > 0; }
-    bool lobe_present(int lobe, bool coated) const;
+    bool lobe_present(int lobe, bool coated, bool inside) const;
+    // The random-walk subsurface lobes (both are zero unless subsurface_): the crossing of the
+    // surface, and the reflection back inside of what the exit lobe does not transmit.
+    SampledSpectrum subsurface_f(Vec3f wo, Vec3f wi) const;
+    float subsurface_pdf(Vec3f wo, Vec3f wi, const LobeProbabilities &lobes) const;
 
     // The two-sided lobes, evaluated with wo in the upper hemisphere (the caller mirrors both
     // directions when wo is below): reflection for wi.z > 0, transmission for wi.z < 0.
@@ -134,8 +153,9 @@ class DisneyBxDF final : public BxDF {
     SampledSpectrum base_color_, sqrt_base_color_, sheen_color_, tinted_f0_, eta_;
     float metallic_weight_, dielectric_weight_, specular_bsdf_weight_, sheen_weight_;
     float roughness_, specular_tint_, clearcoat_, clearcoat_alpha_;
-    bool thin_;
+    bool thin_, subsurface_;
     float diff_trans_, flatness_;
+    float lambert_share_;  // of the diffuse lobe's Lambertian part: 1 - diffTrans / 2, 0 with subsurface
     TrowbridgeReitzDistribution specular_, thin_transmission_, clearcoat_masking_;
     DielectricBxDF specular_bsdf_;
     // Which lobes can be non-zero (from the parameters alone; see lobe_present for the sides).

@@ -2,6 +2,8 @@
 
 #include "geometry/interaction.h"
 #include "materials/dielectric_material.h"
+#include "materials/random_walk_albedo.h"
+#include "media/homogeneous_medium.h"
 #include "params/constant_textures.h"
 #include "params/parameters.h"
 #include "spectral/cie.h"
@@ -56,13 +58,51 @@ FloatTexturePtr read_float(const ParameterDictionary &params, const NamedTexture
     return texture;
 }
 
+// The random-walk interior's coefficient at each wavelength, from baseColor A and
+// scatterDistance d there (random_walk_albedo.h): sigma_t = 1 / l(d, A), split by the
+// single-scattering albedo that reflects A, plus any Beer-Lambert absorption of the solid.
+class RandomWalkCoefficient final : public Spectrum {
+  public:
+    enum Kind { Scattering, Absorption };
+    RandomWalkCoefficient(SpectrumPtr albedo, SpectrumPtr distance, SpectrumPtr absorption, Kind kind)
+        : albedo_(std::move(albedo)), distance_(std::move(distance)), absorption_(std::move(absorption)),
+          kind_(kind) {
+        for (int lambda = int(LambdaMin); lambda <= int(LambdaMax); ++lambda)
+            max_ = std::max(max_, (*this)(float(lambda)));
+    }
+    float operator()(float lambda) const override {
+        float A = clamp((*albedo_)(lambda), 0.f, 1.f);
+        // A zero distance is the diffuse BRDF's limit; a tiny one keeps sigma_t finite.
+        float d = std::max((*distance_)(lambda), 1e-6f);
+        float sigma_t = 1 / random_walk_mean_free_path(d, A);
+        // Light that enters returns with probability R; the BRDF's Lambertian part reflects
+        // A times the exit lobe's albedo 41/42, so that is what R must be.
+        float alpha = random_walk_single_scattering_albedo(A * 41 / 42);
+        if (kind_ == Scattering) return alpha * sigma_t;
+        return (1 - alpha) * sigma_t + (absorption_ ? (*absorption_)(lambda) : 0.f);
+    }
+    float max_value() const override { return max_; }
+
+  private:
+    SpectrumPtr albedo_, distance_, absorption_;
+    Kind kind_;
+    float max_ = 0;
+};
+
 } // namespace
 
+MediumPtr create_random_walk_medium(SpectrumPtr albedo, SpectrumPtr scatter_distance, SpectrumPtr interior_sigma_a) {
+    auto sigma_s = std::make_shared<RandomWalkCoefficient>(albedo, scatter_distance, nullptr,
+                                                           RandomWalkCoefficient::Scattering);
+    auto sigma_a = std::make_shared<RandomWalkCoefficient>(albedo, scatter_distance, interior_sigma_a,
+                                                           RandomWalkCoefficient::Absorption);
+    return std::make_shared<HomogeneousMedium>(std::move(sigma_a), std::move(sigma_s), 1, 0);
+}
+
 DisneyMaterial::DisneyMaterial(DisneyTextures textures, SpectrumPtr eta, bool thin, SpectrumPtr sigma_a,
-                               SpectrumTexturePtr scatter_distance)
+                               MediumPtr subsurface)
     : textures_(std::move(textures)), eta_(std::move(eta)), reference_eta_((*eta_)(FraunhoferD)),
-      thin_(thin), sigma_a_(thin ? nullptr : std::move(sigma_a)),
-      scatter_distance_(std::move(scatter_distance)) {
+      thin_(thin), sigma_a_(thin ? nullptr : std::move(sigma_a)), subsurface_(thin ? nullptr : std::move(subsurface)) {
     if (dynamic_cast<const ConstantSpectrumTexture *>(textures_.base_color.get()))
         constant_luminance_ = luminance(*textures_.base_color, TextureEvalContext());
 
@@ -105,6 +145,7 @@ DisneyParameters DisneyMaterial::parameters(const TextureEvalContext &ctx, const
     p.eta = eta_->sample(lambda);
     p.reference_eta = reference_eta_;
     p.thin = thin_;
+    p.subsurface = subsurface_ != nullptr;
     if (thin_) {
         p.diff_trans = evaluate_clamped(textures_.diff_trans, ctx, 0, 2);
         p.flatness = evaluate_clamped(textures_.flatness, ctx, 0, 1);
@@ -142,7 +183,7 @@ MaterialPtr create_disney_material(const ParameterDictionary &params, const Name
     // Burley 2015, section 3.4: solids add scatterDistance, thin surfaces diffTrans and
     // flatness. Parameters of the other kind are left unread, so they are reported as unused.
     bool thin = params.get_one_bool("thin", false);
-    SpectrumTexturePtr scatter_distance;
+    MediumPtr subsurface;
     if (thin) {
         t.diff_trans = read_float(params, textures, "diffTrans", 0, 0, 2);
         t.flatness = read_float(params, textures, "flatness", 0, 0, 1);
@@ -151,21 +192,30 @@ MaterialPtr create_disney_material(const ParameterDictionary &params, const Name
             warning(params.location(name), std::string("a thin surface has no interior: \"") + name + "\" is ignored");
         }
     } else {
-        scatter_distance = params.get_spectrum_texture_or_null("scatterDistance", SpectrumType::Unbounded, textures);
+        SpectrumTexturePtr scatter_distance =
+            params.get_spectrum_texture_or_null("scatterDistance", SpectrumType::Unbounded, textures);
         if (scatter_distance) {
-            auto *c = dynamic_cast<const ConstantSpectrumTexture *>(scatter_distance.get());
-            float lo = 0, hi = 1;
-            if (c) spectrum_range(*c->spectrum(), &lo, &hi);
-            if (!(lo >= 0))
+            auto *distance = dynamic_cast<const ConstantSpectrumTexture *>(scatter_distance.get());
+            if (!distance)
+                throw InputError(params.location("scatterDistance"),
+                                 "\"scatterDistance\" must be a constant: the subsurface volume is one per object");
+            float lo, hi;
+            spectrum_range(*distance->spectrum(), &lo, &hi);
+            if (!(lo >= 0 && std::isfinite(hi)))
                 throw InputError(params.location("scatterDistance"), "\"scatterDistance\" must be non-negative");
-            if (hi > 0)
-                warning(params.location("scatterDistance"),
-                        "subsurface scattering is not supported yet: \"scatterDistance\" is ignored and "
-                        "the diffuse lobe is the BRDF's (as for scatterDistance 0)");
+            if (hi > 0) {
+                auto *albedo = dynamic_cast<const ConstantSpectrumTexture *>(t.base_color.get());
+                if (!albedo)
+                    throw InputError(params.location("baseColor"),
+                                     "with subsurface scattering (\"scatterDistance\" > 0) \"baseColor\" must be a "
+                                     "constant: it sets the albedo of the object's one interior volume");
+                subsurface = create_random_walk_medium(albedo->spectrum(), distance->spectrum(), interior_sigma_a);
+                interior_sigma_a = nullptr;  // now part of the medium
+            }
         }
     }
     return std::make_shared<DisneyMaterial>(std::move(t), std::move(eta), thin, std::move(interior_sigma_a),
-                                            std::move(scatter_distance));
+                                            std::move(subsurface));
 }
 
 } // namespace caustica

@@ -7,6 +7,7 @@
 
 namespace caustica {
 
+class Medium;
 struct SurfaceInteraction;
 
 class Material {
@@ -31,6 +32,10 @@ class Material {
         return {};
     }
     virtual bool has_interior_absorption() const { return false; }
+    // A participating medium that fills the material's interior (the random-walk subsurface
+    // volume of the Disney material), or null. Paths that cross the surface inwards enter it,
+    // whatever the shape's MediumInterface says (medium_interface.h).
+    virtual const Medium *interior_medium() const { return nullptr; }
 };
 
 using MaterialPtr = std::shared_ptr<const Material>;

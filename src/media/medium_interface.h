@@ -5,6 +5,7 @@
 #pragma once
 
 #include "geometry/interaction.h"
+#include "materials/material.h"
 #include "media/medium.h"
 
 namespace caustica {
@@ -16,10 +17,18 @@ struct MediumInterface {
 };
 
 // The medium a ray leaving surface point si in direction w travels through, given the medium
-// the path was in before reaching si.
+// the path was in before reaching si. A material's own interior medium takes precedence inside
+// its surface; leaving it, a path returns to the shape's outside medium (vacuum without a
+// MediumInterface).
 inline const Medium *medium_after(const SurfaceInteraction &si, Vec3f w, const Medium *current) {
+    const bool outwards = dot(w, si.n) > 0;
+    if (const Medium *interior = si.material ? si.material->interior_medium() : nullptr) {
+        if (!outwards) return interior;
+        if (current != interior) return current;
+        return si.medium_interface ? si.medium_interface->outside : nullptr;
+    }
     if (!si.medium_interface) return current;
-    return dot(w, si.n) > 0 ? si.medium_interface->outside : si.medium_interface->inside;
+    return outwards ? si.medium_interface->outside : si.medium_interface->inside;
 }
 
 } // namespace caustica

@@ -286,6 +286,7 @@ void analyse_features(const SceneDescription &d, Scene &scene) {
         f.absorbing_interiors |= m->has_interior_absorption();
     }
     f.media = !scene.media.empty();
+    for (const MaterialPtr &m : scene.materials) f.media |= m->interior_medium() != nullptr;
     f.visible_emitters = !scene.lights.empty();
     bool non_specular_surfaces = false;
     for (const MaterialPtr &m : scene.materials) non_specular_surfaces |= m->has_non_specular_lobe();
