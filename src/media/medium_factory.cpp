@@ -1,6 +1,9 @@
 #include "media/medium_factory.h"
 
 #include "materials/dielectric_material.h"
+#include "materials/subsurface_coefficients.h"
+#include "spectral/color_space.h"
+#include "spectral/rgb_spectrum.h"
 #include "media/homogeneous_medium.h"
 
 #include <cmath>
@@ -36,7 +39,18 @@ MediumPtr create_medium(const std::string &type, const ParameterDictionary &para
     SpectrumPtr sigma_a, sigma_s;
     std::string preset = params.get_one_string("preset", "");
     if (!preset.empty()) {
-        throw InputError(params.location("preset"), "unknown medium preset \"" + preset + "\"");
+        auto measured = find_measured_subsurface_medium(preset);
+        if (!measured) {
+            std::string names;
+            for (const MeasuredSubsurfaceMedium &m : measured_subsurface_media())
+                names += (names.empty() ? "" : ", ") + std::string(m.name);
+            throw InputError(params.location("preset"),
+                             "unknown medium preset \"" + preset + "\" (Jensen et al. 2001's media: " + names + ")");
+        }
+        // The reduced scattering coefficient stands for sigma_s with isotropic scattering
+        // (similarity theory), as pbrt does with these presets.
+        sigma_a = std::make_shared<RGBUnboundedSpectrum>(RGBColorSpace::srgb(), measured->sigma_a);
+        sigma_s = std::make_shared<RGBUnboundedSpectrum>(RGBColorSpace::srgb(), measured->sigma_s_reduced);
     } else {
         sigma_a = read_coefficient(params, "sigma_a");
         sigma_s = read_coefficient(params, "sigma_s");

@@ -240,6 +240,14 @@ TEST(MediumFactory, ReadsPbrtParametersAndRejectsBadValues) {
     EXPECT_EQ(error_line("homogeneous", {numbers("rgb", "Le", {1, 1, 1}, 3)}), 3);
     EXPECT_EQ(error_line("homogeneous", {strings("string", "preset", {"unobtainium"}, 4)}), 4);
     EXPECT_EQ(error_line("uniformgrid", {}), 1);
+    // A Jensen et al. 2001 preset: skin1's sigma_a is (0.032, 0.17, 0.48) per mm, so at a red
+    // wavelength it is far below the blue one, and "scale" 1000 converts to metres.
+    MediumPtr skin = create_medium("homogeneous",
+                                   dictionary({strings("string", "preset", {"Skin1"}, 2), numbers("float", "scale", {1000}, 3)}),
+                                   {});
+    SampledWavelengths red = SampledWavelengths::fixed(640), blue = SampledWavelengths::fixed(450);
+    EXPECT_GT(skin->sigma_a(blue)[0], 5 * skin->sigma_a(red)[0]);
+    EXPECT_NEAR(skin->sigma_s(red)[0], 740, 150) << "sigma_s' of skin1 in red is 0.74 per mm";
     EXPECT_EQ(error_line("homogeneous", {numbers("rgb", "Le", {0, 0, 0}, 3)}), -1) << "zero emission is allowed";
 }
 
