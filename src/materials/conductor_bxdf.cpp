@@ -36,7 +36,7 @@ std::optional<BSDFSample> ConductorBxDF::sample_f(Vec3f wo, float, Vec2f u, Tran
     // Reflections off visible facets can still leave below the horizon: those are masked by
     // the shadowing term, which the pdf of the surviving directions does not renormalise.
     if (!same_hemisphere(wo, wi)) return {};
-    float pdf = distribution_.pdf(wo, wm) / (4 * abs_dot(wo, wm));
+    float pdf = distribution_.reflection_pdf(wo, wm);
     float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
     if (cos_i == 0 || pdf == 0) return {};
     BSDFSample s;
@@ -55,8 +55,9 @@ float ConductorBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) c
     Vec3f wm = wo + wi;
     if (length_squared(wm) == 0) return 0;
     wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
-    // Jacobian of the reflection half-vector map: d(wm)/d(wi) = 1 / (4 |wo.wm|).
-    return distribution_.pdf(wo, wm) / (4 * abs_dot(wo, wm));
+    // The visible-normal density times the reflection map's Jacobian d(wm)/d(wi) = 1 / (4 |wo.wm|),
+    // in the form that stays exact at grazing angles (see reflection_pdf).
+    return distribution_.reflection_pdf(wo, wm);
 }
 
 } // namespace caustica

@@ -40,30 +40,51 @@ DielectricBxDF::DielectricBxDF(const SampledSpectrum &eta,
                                const TrowbridgeReitzDistribution &distribution)
     : eta_(eta), distribution_(distribution) {
     index_matched_ = true;
+    bool any_matched = false;
     for (int i = 0; i < NumWavelengths; ++i) {
         if (eta_[i] != eta_[0]) dispersive_ = true;
-        if (!(std::abs(eta_[i] - 1) < IndexMatchedTolerance)) index_matched_ = false;
+        if (is_matched_lane(i))
+            any_matched = true;
+        else
+            index_matched_ = false;
     }
+    partly_matched_ = any_matched && !index_matched_;
+}
+
+float DielectricBxDF::lane_reflectance(float cos_d, int lane) const {
+    return is_matched_lane(lane) ? 0.f : fresnel_dielectric(cos_d, eta_[lane]);
+}
+
+float DielectricBxDF::selection_reflectance(float cos_d) const {
+    if (!dispersive_) return fresnel_dielectric(cos_d, eta_[0]);
+    float sum = 0;
+    for (int i = 0; i < NumWavelengths; ++i) sum += lane_reflectance(cos_d, i);
+    return sum / NumWavelengths;
 }
 
 BxDFFlags DielectricBxDF::flags() const {
     if (index_matched_) return BxDFSpecularTransmission;
     BxDFFlags lobe = distribution_.effectively_smooth() ? BxDFSpecular : BxDFGlossy;
-    return BxDFReflection | BxDFTransmission | lobe;
+    BxDFFlags all = BxDFReflection | BxDFTransmission | lobe;
+    // A hero in the index-matched band passes straight through, even on a rough interface.
+    return partly_matched_ ? all | BxDFSpecular : all;
 }
 
 std::optional<BSDFSample> DielectricBxDF::sample_f(Vec3f wo, float uc, Vec2f u,
                                                    TransportMode mode, SampleFlags flags) const {
     if (wo.z == 0) return {};
-    if (index_matched_) {
-        // The interface is invisible: the delta transmission continues the ray unchanged, with
-        // unit throughput in either transport mode (eta' = 1).
+    if (index_matched_ || is_matched_lane(0)) {
+        // The hero sees no interface: the delta transmission continues the ray unchanged, with
+        // unit throughput in either transport mode (eta' = 1). Lanes outside the band have
+        // their lobes elsewhere, so a partly matched interface terminates the secondaries.
         if (!allows(flags, SampleFlags::Transmission)) return {};
         BSDFSample s;
         s.wi = -wo;
-        s.f = SampledSpectrum(1 / std::abs(wo.z));
+        s.f[0] = 1 / std::abs(wo.z);
+        if (index_matched_) s.f = SampledSpectrum(s.f[0]);
         s.pdf = 1;
         s.flags = BxDFSpecularTransmission;
+        s.dispersive = !index_matched_;
         return s;
     }
     if (distribution_.effectively_smooth()) return sample_specular(wo, uc, mode, flags);
@@ -73,14 +94,14 @@ std::optional<BSDFSample> DielectricBxDF::sample_f(Vec3f wo, float uc, Vec2f u,
 std::optional<BSDFSample> DielectricBxDF::sample_specular(Vec3f wo, float uc, TransportMode mode,
                                                           SampleFlags flags) const {
     float cos_o = wo.z;
-    LobeChoice lobes = choose_lobes(fresnel_dielectric(cos_o, eta_[0]), flags);
+    LobeChoice lobes = choose_lobes(selection_reflectance(cos_o), flags);
     if (lobes.empty()) return {};
     BSDFSample s;
     if (uc < lobes.reflection_probability()) {
         // Mirror reflection; every wavelength reflects the same way with its own Fresnel weight.
         s.wi = Vec3f(-wo.x, -wo.y, wo.z);
         for (int i = 0; i < NumWavelengths; ++i)
-            s.f[i] = fresnel_dielectric(cos_o, eta_[i]) / std::abs(cos_o);
+            s.f[i] = lane_reflectance(cos_o, i) / std::abs(cos_o);
         s.pdf = lobes.reflection_probability();
         s.flags = BxDFSpecularReflection;
         return s;
@@ -106,7 +127,7 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
                                                        TransportMode mode, SampleFlags flags) const {
     Vec3f wm = distribution_.sample_wm(wo, u);
     float wo_dot_m = dot(wo, wm);
-    LobeChoice lobes = choose_lobes(fresnel_dielectric(wo_dot_m, eta_[0]), flags);
+    LobeChoice lobes = choose_lobes(selection_reflectance(wo_dot_m), flags);
     if (lobes.empty()) return {};
     float cos_o = std::abs(wo.z);
     BSDFSample s;
@@ -116,20 +137,27 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
         float cos_i = std::abs(s.wi.z);
         float common = distribution_.D(wm) * distribution_.G(wo, s.wi) / (4 * cos_i * cos_o);
         for (int i = 0; i < NumWavelengths; ++i)
-            s.f[i] = fresnel_dielectric(wo_dot_m, eta_[i]) * common;
-        s.pdf = distribution_.pdf(wo, wm) / (4 * std::abs(wo_dot_m)) * lobes.reflection_probability();
+            s.f[i] = lane_reflectance(wo_dot_m, i) * common;
+        s.pdf = distribution_.reflection_pdf(wo, wm) * lobes.reflection_probability();
         s.flags = BxDFGlossyReflection;
         return s;
     }
     float etap;
     if (!refract(wo, wm, eta_[0], &etap, &s.wi)) return {};
     if (same_hemisphere(wo, s.wi) || s.wi.z == 0) return {};
-    // Near eta = 1 the half vector recovered from (wo, wi) is a difference of nearly opposite
-    // vectors, with a direction error of about 1e-7 / |eta' wi + wo| (up to 1e-3): for facets
-    // within that of vertical, its orientation can flip so that f() and pdf() reject the pair.
-    // Rejecting the sample too keeps sample_f, f and pdf describing the same distribution.
-    if (!transmission_half_vector(wo, s.wi, etap)) return {};
-    float cos_i = std::abs(s.wi.z);
+    // The sample is evaluated where f() and pdf() evaluate it: at the half vector recovered
+    // from (wo, wi), not at the sampled facet. Near eta = 1 the recovered vector is a difference
+    // of nearly opposite vectors, with a direction error of about 1e-7 / |eta' wi + wo| (up to
+    // 1e-3): for facets within that of vertical its orientation can flip, and for facets nearly
+    // edge-on to wo the Fresnel transmittance 1 - F can round to zero there. Either makes pdf()
+    // zero, and the sample is rejected too, so that sample_f, f and pdf describe the same
+    // distribution. The weight f |cos| / pdf is G / G1 at whichever facet it is evaluated.
+    std::optional<Vec3f> recovered = transmission_half_vector(wo, s.wi, etap);
+    if (!recovered) return {};
+    wm = *recovered;
+    wo_dot_m = dot(wo, wm);
+    lobes = choose_lobes(selection_reflectance(wo_dot_m), flags);
+    if (lobes.pt == 0) return {};
     float wi_dot_m = dot(s.wi, wm);
     // Jacobian of the refraction half-vector map (Walter et al. 2007, eq. 17).
     float denom = sqr(wi_dot_m + wo_dot_m / etap);
@@ -137,12 +165,10 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
     s.pdf = distribution_.pdf(wo, wm) * std::abs(wi_dot_m) / denom * lobes.transmission_probability();
     s.flags = BxDFGlossyTransmission;
     s.eta = etap;
+    float narrowest_alpha = std::min(distribution_.alpha_x(), distribution_.alpha_y());
     if (!dispersive_) {
-        float t = (1 - fresnel_dielectric(wo_dot_m, eta_[0])) * distribution_.D(wm) *
-                  distribution_.G(wo, s.wi) * std::abs(wi_dot_m * wo_dot_m / (cos_i * cos_o * denom));
-        t *= radiance_scaling(mode, etap);
-        s.f = SampledSpectrum(t);
-    } else if (std::max(distribution_.alpha_x(), distribution_.alpha_y()) < DispersiveAlphaThreshold) {
+        s.f = SampledSpectrum(rough_transmission(wo, s.wi, eta_[0], mode));
+    } else if (partly_matched_ || narrowest_alpha < DispersiveAlphaThreshold) {
         s.f[0] = rough_transmission(wo, s.wi, eta_[0], mode);
         s.dispersive = true;
     } else {
@@ -171,23 +197,27 @@ SampledSpectrum DielectricBxDF::f(Vec3f wo, Vec3f wi, TransportMode mode) const 
     if (cos_o == 0 || cos_i == 0) return {};
     SampledSpectrum result;
     if (cos_o * cos_i > 0) {
+        // The half vector of two directions on one side is visible from both (see
+        // TrowbridgeReitzDistribution::reflection_pdf), so there is no visibility test: at
+        // grazing angles it would only test rounding, and pdf() has none either.
         Vec3f wm = wi + wo;
         if (length_squared(wm) == 0) return {};
         wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
         float wo_dot_m = dot(wo, wm);
-        if (dot(wi, wm) * cos_i < 0 || wo_dot_m * cos_o < 0) return {};
         float common = distribution_.D(wm) * distribution_.G(wo, wi) / std::abs(4 * cos_i * cos_o);
         for (int i = 0; i < NumWavelengths; ++i)
-            result[i] = fresnel_dielectric(wo_dot_m, eta_[i]) * common;
+            result[i] = lane_reflectance(wo_dot_m, i) * common;
         return result;
     }
     if (!dispersive_) return SampledSpectrum(rough_transmission(wo, wi, eta_[0], mode));
-    for (int i = 0; i < NumWavelengths; ++i) result[i] = rough_transmission(wo, wi, eta_[i], mode);
+    for (int i = 0; i < NumWavelengths; ++i)
+        if (!is_matched_lane(i)) result[i] = rough_transmission(wo, wi, eta_[i], mode);
     return result;
 }
 
 float DielectricBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) const {
-    if (specular()) return 0;
+    // A hero in the index-matched band samples only its straight-through delta.
+    if (specular() || is_matched_lane(0)) return 0;
     float cos_o = wo.z, cos_i = wi.z;
     if (cos_o == 0 || cos_i == 0) return 0;
     bool reflection = cos_o * cos_i > 0;
@@ -196,18 +226,17 @@ float DielectricBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) 
         wm = wi + wo;
         if (length_squared(wm) == 0) return 0;
         wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
-        if (dot(wi, wm) * cos_i < 0 || dot(wo, wm) * cos_o < 0) return 0;
     } else {
         std::optional<Vec3f> m = transmission_half_vector(wo, wi, relative_eta(cos_o, eta_[0]));
         if (!m) return 0;
         wm = *m;
     }
     float wo_dot_m = dot(wo, wm), wi_dot_m = dot(wi, wm);
-    LobeChoice lobes = choose_lobes(fresnel_dielectric(wo_dot_m, eta_[0]), flags);
+    LobeChoice lobes = choose_lobes(selection_reflectance(wo_dot_m), flags);
     if (lobes.empty()) return 0;
     if (reflection) {
         if (lobes.pr == 0) return 0;
-        return distribution_.pdf(wo, wm) / (4 * std::abs(wo_dot_m)) * lobes.reflection_probability();
+        return distribution_.reflection_pdf(wo, wm) * lobes.reflection_probability();
     }
     if (lobes.pt == 0) return 0;
     float denom = sqr(wi_dot_m + wo_dot_m / relative_eta(cos_o, eta_[0]));

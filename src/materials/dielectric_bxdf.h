@@ -30,10 +30,19 @@ class DielectricBxDF final : public BxDF {
     // |eta' - 1| >= 1e-4 (triangle inequality), so its direction keeps about three significant
     // digits in float even where wi is nearly -wo: the band is also the guard that keeps the
     // rough model's half vector robust near eta = 1.
+    // A dispersive index can cross 1 (an index-matching liquid does, by design), leaving only
+    // some lanes in the band. Those lanes see no interface either: they reflect nothing and
+    // pass straight through, while the other lanes scatter as usual. A hero in the band samples
+    // that straight-through delta; the other lanes' lobes lie elsewhere, so the sample
+    // terminates them. Rough refraction samples of a hero outside the band terminate the
+    // secondaries too: a matched lane's light does not go where they go. (Inside the band the
+    // rough model itself degenerates: at eta' = 1 its transmission f grows as 1 / |wi + wo|^2,
+    // which is not integrable around wi = -wo.)
     static constexpr float IndexMatchedTolerance = 1e-4f;
     // Rough transmission through a dispersive eta keeps the secondary wavelengths (each lane
     // evaluates f exactly with its own half vector) unless the lobe is narrower than this alpha
-    // (the larger of alpha_x and alpha_y).
+    // along either axis (the smaller of alpha_x and alpha_y: an anisotropic lobe that is narrow
+    // along one axis does not overlap its neighbours there, whatever its width along the other).
     // The reason is variance, not bias: the secondaries are estimated with the hero's sampling
     // density, and their refracted lobes are offset from the hero's by the angular dispersion,
     // roughly delta_n * tan(theta) -- up to about 0.05 rad for dense flint glass over the
@@ -53,10 +62,22 @@ class DielectricBxDF final : public BxDF {
     // True when the lanes' etas differ, so refraction directions depend on wavelength.
     bool is_dispersive() const { return dispersive_; }
     bool is_index_matched() const { return index_matched_; }
+    // Whether lane i's index is within IndexMatchedTolerance of 1, so that it sees no interface.
+    bool is_matched_lane(int lane) const {
+        return std::abs(eta_[lane] - 1) < IndexMatchedTolerance;
+    }
     const SampledSpectrum &eta() const { return eta_; }
 
   private:
     bool specular() const { return index_matched_ || distribution_.effectively_smooth(); }
+    // The reflectance that chooses between reflection and refraction when sampling, for light
+    // meeting the interface (or a facet) with cosine cos_d: the Fresnel term of the single
+    // index, or for a dispersive one the average over the lanes. The average makes every lane's
+    // reflection weight F_i / F at most NumWavelengths; the hero's F alone would give F_i / F_0,
+    // unbounded where F_0 nearly vanishes (a hero index at or near 1 while other lanes reflect).
+    float selection_reflectance(float cos_d) const;
+    // Fresnel reflectance of one lane: zero for a lane in the index-matched band.
+    float lane_reflectance(float cos_d, int lane) const;
     std::optional<BSDFSample> sample_specular(Vec3f wo, float uc, TransportMode mode,
                                               SampleFlags flags) const;
     std::optional<BSDFSample> sample_rough(Vec3f wo, float uc, Vec2f u, TransportMode mode,
@@ -67,6 +88,8 @@ class DielectricBxDF final : public BxDF {
     SampledSpectrum eta_;
     TrowbridgeReitzDistribution distribution_;
     bool dispersive_ = false, index_matched_ = false;
+    // Some lanes, not all, are in the index-matched band.
+    bool partly_matched_ = false;
 };
 
 } // namespace caustica

@@ -21,9 +21,13 @@ inline float fresnel_dielectric(float cos_i, float eta) {
         eta = 1 / eta;
         cos_i = -cos_i;
     }
-    float sin2_t = (1 - sqr(cos_i)) / sqr(eta);
-    if (sin2_t >= 1) return 1;
-    float cos_t = safe_sqrt(1 - sin2_t);
+    // cos^2 of the refracted angle by Snell's law, 1 - (1 - cos_i^2) / eta^2, in the form
+    // (cos_i^2 + (eta^2 - 1)) / eta^2: the first form rounds 1 - cos_i^2 to 1 for cos_i below
+    // about 2.4e-4, which made an eta = 1 interface totally reflecting at grazing angles; the
+    // second keeps cos_i^2 whole and is exactly cos_i^2 for eta = 1, so nothing is reflected.
+    float cos2_t = (sqr(cos_i) + (sqr(eta) - 1)) / sqr(eta);
+    if (cos2_t <= 0) return 1;
+    float cos_t = std::sqrt(cos2_t);
     float r_parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
     float r_perpendicular = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
     return (sqr(r_parallel) + sqr(r_perpendicular)) / 2;

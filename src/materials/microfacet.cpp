@@ -39,6 +39,12 @@ float TrowbridgeReitzDistribution::D(Vec3f w, Vec3f wm) const {
     return G1(w) / cos_w * D(wm) * w_dot_m;
 }
 
+float TrowbridgeReitzDistribution::reflection_pdf(Vec3f wo, Vec3f wm) const {
+    float cos_o = std::abs(wo.z);
+    if (cos_o == 0) return 0;
+    return G1(wo) * D(wm) / (4 * cos_o);
+}
+
 Vec3f TrowbridgeReitzDistribution::sample_wm(Vec3f w, Vec2f u) const {
     // Heitz 2018, section 3: stretch the view direction so the distribution becomes the
     // hemisphere of a unit isotropic GGX (alpha = 1), sample the projected area of that

@@ -42,6 +42,14 @@ class TrowbridgeReitzDistribution {
     float D(Vec3f w, Vec3f wm) const;
     // Density of sample_wm(w, u) with respect to solid angle of wm.
     float pdf(Vec3f w, Vec3f wm) const { return D(w, wm); }
+    // Density of wi = reflect(wo, wm) for wm drawn by sample_wm(wo, .), where wm is the half
+    // vector of wo and wi in the same hemisphere: the visible-normal density times the Jacobian
+    // 1 / (4 |wo.wm|) of the reflection map, in which wo.wm cancels, leaving G1(wo) D(wm) /
+    // (4 |cos wo|). Such a half vector is always visible from wo (wo.(wo + wi) = 1 + wo.wi > 0),
+    // but for nearly opposite grazing directions wo.wm is a cancellation that float rounding can
+    // make zero or negative: dividing it out keeps the density exact there, so pdf() agrees
+    // with sample_f() at every direction sampling returns.
+    float reflection_pdf(Vec3f wo, Vec3f wm) const;
     // Samples a visible normal from the side of w (w may be below the surface; the normal is
     // always returned in the upper hemisphere).
     Vec3f sample_wm(Vec3f w, Vec2f u) const;

@@ -1,7 +1,8 @@
 // The numerical stress suite: small scenes at the edges of what the models handle (grazing
 // angles, total internal reflection, eta exactly 1 and 1 +/- 1e-6, roughness from 1e-4 to 1, scene
 // scales from 1e-4 to 1e5, a light inside glass, long specular chains, zero and extremely bright
-// emitters), each rendered by every integrator. The renderer counts the samples it had to drop
+// emitters, the camera inside a medium, dense media and subsurface scattering), each rendered by
+// every integrator. The renderer counts the samples it had to drop
 // because they were not finite (--stats-json "non_finite_samples"); a non-finite sample is a bug
 // to fix where it arises, so the count must be zero, and every pixel of the image finite.
 #include "render_test_support.h"
@@ -51,6 +52,10 @@ std::string slab_scene(const std::string &material, double s, const std::string 
 
 std::vector<StressScene> stress_scenes() {
     const std::string glass = "Material \"dielectric\" \"float eta\" [ 1.5 ]";
+    const std::string fog = "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [ 0.1 0.2 0.3 ] "
+                            "\"rgb sigma_s\" [ 0.8 0.5 0.2 ] \"float g\" [ 0.7 ]\n";
+    const std::string dense = "MakeNamedMedium \"dense\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [ 1 10 100 ] "
+                              "\"rgb sigma_s\" [ 5000 2000 1 ] \"float g\" [ -0.9 ]\n";
     return {
         {"eta_exactly_one", slab_scene("Material \"dielectric\" \"float eta\" [ 1 ]", 1)},
         {"eta_one_plus_1e-6", slab_scene("Material \"dielectric\" \"float eta\" [ 1.000001 ]", 1)},
@@ -80,6 +85,19 @@ std::vector<StressScene> stress_scenes() {
          slab_scene(glass, 1, "\"blackbody L\" [ 5000 ]", "\"integer maxdepth\" [ 8 ]") +
              "AttributeBegin\n AreaLightSource \"diffuse\" \"blackbody L\" [ 3000 ]\n Translate 0 0.4 0\n"
              " Shape \"sphere\" \"float radius\" [ 0.05 ]\nAttributeEnd\n"},
+        // The camera, the light and the scene inside a chromatic, strongly forward-scattering fog.
+        {"camera_inside_medium",
+         slab_scene(glass, 1, "\"blackbody L\" [ 5000 ]", "\"integer maxdepth\" [ 8 ]",
+                    fog + "MediumInterface \"\" \"fog\"\nLookAt 0 1.5 2.5  0 0.3 0  0 1 0\n")},
+        // Glass filled with a medium whose coefficients span five orders of magnitude across the
+        // spectrum, backscattering strongly.
+        {"dense_chromatic_medium_in_glass",
+         dense + slab_scene("MediumInterface \"dense\" \"\"\n " + glass, 1)},
+        // Random-walk subsurface with a vanishing and with a huge scatter distance.
+        {"subsurface_scatter_distance_1e-6",
+         slab_scene("Material \"disney\" \"rgb scatterDistance\" [ 1e-6 1e-6 1e-6 ]", 1)},
+        {"subsurface_scatter_distance_1e4",
+         slab_scene("Material \"disney\" \"rgb scatterDistance\" [ 1e4 1 1e-3 ] \"float specTrans\" [ 0.3 ]", 1)},
     };
 }
 
