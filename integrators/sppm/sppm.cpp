@@ -6,9 +6,11 @@
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/light_sampling.h"
 #include "integrators/common/merge_radius.h"
+#include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/photon_side.h"
 #include "integrators/common/wavelength_groups.h"
+#include "media/medium_interface.h"
 #include "scene/scene.h"
 #include "spatial/range_search.h"
 
@@ -75,17 +77,35 @@ struct StoredPhoton {
 
 // Direct lighting and the visible point of one pixel's camera path.
 // lambda is terminated in place if the path crosses dispersion: L is in its measure.
+//
+// Participating media (which pbrt-v4's SPPM does not handle). Every light-carrying path is
+// counted by exactly one of three estimators:
+//   - the camera path reaching an emitter, or next-event estimation at a camera vertex that
+//     continues (glossy surfaces: the two weighted by MIS; specular ones: the hit alone);
+//   - at a camera vertex in a medium, next-event estimation ALONE: the emitter hit right after
+//     a medium scattering event (through medium boundaries only) is not counted, and the camera
+//     path goes on by sampling the phase function, so that light scattered any further is found
+//     at its later vertices;
+//   - at the visible point (the first diffuse surface), next-event estimation for light that
+//     arrives unscattered, and the photons for all the rest: a photon is deposited at a surface
+//     only after at least one scattering event, on a surface or in a medium (trace_photon).
+// Photons are never deposited in media: the camera path resolves the media between the camera
+// and its visible point itself, and the light paths those beyond it.
 void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectrum beta,
                        SampledWavelengths &lambda, IterationPixelContext &ctx, SampledSpectrum &L,
                        VisiblePoint &vp) {
     bool specular_bounce = false;
+    bool medium_scatter = false;   // the last scattering event was in a medium
     float bsdf_pdf = 0;
     LightSampleContext previous{};
+    const Medium *medium = scene.camera_medium;
     const Material *absorbing_interior = nullptr;
     Sampler &sampler = ctx.sampler;
     // Emission reached by BSDF sampling, weighted against next-event estimation as in the path
-    // tracer (only glossy bounces can precede it: the path stops at diffuse surfaces).
+    // tracer (only glossy bounces can precede it: the path stops at diffuse surfaces), and left
+    // to next-event estimation alone after a medium scattering event.
     auto add_emission = [&](const Light &light, const SampledSpectrum &Le, int depth, Vec3f wi) {
+        if (medium_scatter) return;
         float w = 1;
         if (depth > 0 && !specular_bounce)
             w = power_heuristic(1, bsdf_pdf, 1, light_pdf(scene, light, previous, wi));
@@ -95,9 +115,20 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
         SurfaceInteraction si;
         ++ctx.rays;
         bool hit = scene.intersect(ray, &si);
-        if (absorbing_interior) {
-            if (!hit) return;
-            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * (si.t * length(ray.d)));
+        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
+                                               lambda, sampler);
+        beta *= segment.weight;
+        if (beta.is_black()) return;
+        if (segment.scattered) {
+            if (depth == max_depth) return;
+            const Vec3f wo = -normalize(ray.d), p = ray.o - wo * segment.t;
+            L += beta * sample_direct_lighting_in_medium(scene, p, wo, *medium, lambda, sampler, ctx.rays,
+                                                         DirectLighting::LightSamplingOnly);
+            // The phase function is sampled exactly: beta is unchanged.
+            PhaseSample ps = medium->phase().sample_p(wo, sampler.get_2d());
+            medium_scatter = true;
+            ray = Ray{p, ps.wi, Infinity};
+            continue;
         }
         if (!hit) {
             for (const Light *light : scene.infinite_lights)
@@ -108,6 +139,7 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
             add_emission(*si.area_light, si.area_light->L(si.p, si.n, si.uv, si.wo, lambda), depth, -si.wo);
         BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.iteration_scratch) : BSDF();
         if (!bsdf) {
+            medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);
             --depth;
             continue;
@@ -122,7 +154,8 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
             L += beta * sample_direct_lighting(scene, si, bsdf, here, lambda, sampler, ctx.rays,
                                                TransportMode::Radiance,
                                                visible_point ? DirectLighting::LightSamplingOnly
-                                                             : DirectLighting::WeightedAgainstBsdfSampling);
+                                                             : DirectLighting::WeightedAgainstBsdfSampling,
+                                               medium);
         if (visible_point) {
             vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, depth, bsdf, beta, lambda};
             return;
@@ -137,15 +170,18 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
         beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
         bsdf_pdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
         specular_bounce = bs->is_specular();
+        medium_scatter = false;
         previous = here;
         if (bs->is_transmission() && si.material->has_interior_absorption())
             absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        medium = medium_after(si, bs->wi, medium);
         ray = si.spawn_ray(bs->wi);
         if (beta.is_black()) return;
     }
 }
 
-// One photon path: every non-specular surface after the first is a photon.
+// One photon path: every non-specular surface reached after at least one scattering event
+// (on a surface or in a medium) is a photon; see trace_camera_path for why.
 void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, IterationPixelContext &ctx,
                   std::vector<Vec3f> &positions, std::vector<StoredPhoton> &photons) {
     Sampler &sampler = ctx.sampler;
@@ -157,18 +193,34 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
     const float cos_light = les->n == Vec3f{} ? 1.f : abs_dot(les->n, normalize(les->ray.d));
     SampledSpectrum beta = les->L * (cos_light / (chosen->pmf * les->pdf_pos * les->pdf_dir));
     Ray ray = les->ray;
+    // Area lights' paths leave into the medium outside their shape (the side they emit to).
+    const Medium *medium = chosen->light->medium();
     const Material *absorbing_interior = nullptr;
     for (int depth = 0; depth < max_depth; ++depth) {
         SurfaceInteraction si;
         ++ctx.rays;
         bool hit = scene.intersect(ray, &si);
-        if (absorbing_interior) {
-            if (!hit) return;
-            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * (si.t * length(ray.d)));
+        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
+                                               lambda, sampler);
+        if (segment.scattered) {
+            // Scattering in the medium: the event's weight sigma_s T / density stands where a
+            // surface has f |cos| / pdf (the phase function is sampled exactly), and Russian
+            // roulette keeps the photon's power as at a surface.
+            const Vec3f wo = -normalize(ray.d), p = ray.o - wo * segment.t;
+            PhaseSample ps = medium->phase().sample_p(wo, sampler.get_2d());
+            SampledSpectrum next = beta * segment.weight;
+            float q = std::max(0.f, 1 - next.max_value() / beta.max_value());
+            if (sampler.get_1d() < q) return;
+            beta = next / (1 - q);
+            ray = Ray{p, ps.wi, Infinity};
+            if (beta.is_black()) return;
+            continue;
         }
-        if (!hit) return;
+        beta *= segment.weight;
+        if (!hit || beta.is_black()) return;
         BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.sample_scratch) : BSDF();
         if (!bsdf) {
+            medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);
             --depth;
             continue;
@@ -192,6 +244,7 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
         beta = next / (1 - q);
         if (bs->is_transmission() && si.material->has_interior_absorption())
             absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        medium = medium_after(si, bs->wi, medium);
         ray = si.spawn_ray(bs->wi);
         if (beta.is_black()) return;
     }

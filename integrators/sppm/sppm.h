@@ -10,6 +10,11 @@
 // N_{i+1} = N_i + gamma M_i photons are kept of the N_i + M_i gathered (gamma = 2/3), which
 // makes the estimate consistent: bias and variance both vanish as iterations go on.
 //
+// Participating media: camera paths scatter through media on their way to the visible point,
+// estimating single scattering at each medium vertex by light sampling, and photons scatter in
+// media and are deposited on surfaces only (see trace_camera_path in sppm.cpp for how the paths
+// are shared between the estimators).
+//
 // Spectral: camera paths and photons are split into wavelength groups per iteration
 // (wavelength_groups.h); a visible point gathers only its group's photons, and each
 // iteration's flux is rescaled by all photons over the group's photons, so the final division

@@ -8,12 +8,15 @@
 //   is kept small: 36 bytes, plus the 12-byte position the range search indexes (48 in all).
 //
 // Both carry the recursive MIS quantities of Georgiev et al. 2012 ("Implementing vertex
-// connection and merging", tech. report, section 5) at their vertex: see vcm_mis.h.
+// connection and merging", tech. report, section 5) at their vertex: see vcm_mis.h. Vertices
+// inside participating media are stored too, flagged as such: they are connected like surface
+// vertices, and their photons go to separate photon maps, gathered only at camera vertices in a
+// medium (within a sphere, not a disk).
 #pragma once
 
 #include "core/octahedral.h"
 #include "integrators/common/photon_side.h"
-#include "materials/bsdf.h"
+#include "integrators/vcm/scattering_point.h"
 #include "spectral/sampled_spectrum.h"
 
 #include <array>
@@ -22,10 +25,7 @@
 namespace caustica {
 
 struct LightVertex {
-    Vec3f p, ng;           // position, geometric normal
-    Vec3f shading_n;       // shading normal (for the adjoint shading-normal correction)
-    Vec3f wo;              // towards the previous vertex of the light path
-    BSDF bsdf;             // lives in the iteration's scratch memory
+    ScatteringPoint point; // bsdf in the iteration's scratch memory
     SampledSpectrum beta;  // light subpath throughput, emitted flux included
     float d_vcm, d_vc, d_vm;
     uint16_t path_length;  // segments from the light to this vertex
@@ -39,7 +39,8 @@ struct Photon {
     float d_vcm, d_vm;
     uint32_t wo;           // octahedral-encoded direction towards the previous vertex
     // Octahedral-encoded geometric normal: merging only gathers photons that lie on a surface
-    // oriented like the camera vertex's (see photon_side.h).
+    // oriented like the camera vertex's (see photon_side.h). Unused for a photon in a medium
+    // (photons in media are kept in maps of their own).
     uint32_t normal;
     uint16_t path_length;
     uint16_t secondary_terminated;

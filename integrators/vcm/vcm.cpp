@@ -4,11 +4,14 @@
 #include "core/error.h"
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/merge_radius.h"
+#include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/splat_scale.h"
+#include "integrators/common/transmittance.h"
 #include "integrators/vcm/light_vertex.h"
 #include "integrators/vcm/vcm_mis.h"
 #include "integrators/common/wavelength_groups.h"
+#include "media/medium_interface.h"
 #include "scene/scene.h"
 #include "spatial/range_search.h"
 
@@ -57,7 +60,8 @@ struct Iteration {
     float radius;
     const WavelengthGroups &groups;
     std::vector<VcmWeights> weights;       // per wavelength group
-    std::vector<float> vm_normalization;   // per group: 1 / (pi r^2 N_group)
+    std::vector<float> vm_normalization;   // per group: 1 / (pi r^2 N_group), merges on surfaces
+    std::vector<float> volume_normalization; // per group: 1 / (4/3 pi r^3 N_group), in media
     // Light tracing: N light paths against one camera sample per pixel of the full frame.
     float light_paths, full_frame_pixels;
 };
@@ -67,6 +71,32 @@ struct StoredPath {
     const std::vector<LightVertex> *vertices = nullptr;
     uint32_t begin = 0, count = 0;
 };
+
+// The photons of one wavelength group, either those on surfaces or those in media: the two are
+// never merged with each other (a surface camera vertex gathers over a disk, a medium one over a
+// sphere), so each kind has its own range search.
+struct PhotonMap {
+    std::unique_ptr<RangeSearch> search;
+    std::vector<Vec3f> positions;
+    std::vector<Photon> photons;
+};
+
+// The point where a segment of a subpath ends: a surface hit (si, its BSDF, and the media on its
+// two sides given the medium the path arrived in), or the scattering event inside `medium`.
+ScatteringPoint surface_point(const SurfaceInteraction &si, const BSDF &bsdf, const Medium *arrived_in) {
+    return ScatteringPoint{si.p, si.n, si.shading.n, si.wo, bsdf, nullptr, medium_after(si, si.n, arrived_in),
+                           medium_after(si, -si.n, arrived_in)};
+}
+
+ScatteringPoint medium_point(const Ray &ray, float distance, const Medium *medium) {
+    const Vec3f wo = -normalize(ray.d);
+    return ScatteringPoint{ray.o - wo * distance, Vec3f{}, Vec3f{}, wo, BSDF(), medium, medium, medium};
+}
+
+// A ray leaving point towards p_to (with normal n_to, zero if none) and stopping short of it.
+Ray spawn_ray_between(const ScatteringPoint &point, Vec3f p_to, Vec3f n_to) {
+    return spawn_ray_to(point.p, point.ng, p_to, n_to);
+}
 
 // Contributions made with a terminated wavelength set (a dispersive refraction on either
 // subpath) are valid for the hero alone. The camera sample adds everything in the measure of
@@ -115,10 +145,10 @@ struct LightPathContext {
 void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const SubpathMis &m,
                        const SampledWavelengths &lambda) {
     const Scene &scene = ctx.it.scene;
-    auto cs = scene.camera->sample_wi(v.p, ctx.pixel.sampler.get_2d(), lambda);
+    const ScatteringPoint &point = v.point;
+    auto cs = scene.camera->sample_wi(point.p, ctx.pixel.sampler.get_2d(), lambda);
     if (!cs || !(cs->pdf > 0)) return;
-    SampledSpectrum f = v.bsdf.f(v.wo, cs->wi, TransportMode::Importance) *
-                        importance_cosine(v.ng, v.shading_n, v.wo, cs->wi);
+    SampledSpectrum f = point.f(cs->wi, TransportMode::Importance);
     if (f.is_black()) return;
 
     // The camera would generate this vertex with its directional density (the same lens point
@@ -126,20 +156,21 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
     // converted to the area measure here.
     float pdf_lens, pdf_dir;
     scene.camera->pdf_we(Ray{cs->p_lens, -cs->wi, Infinity}, &pdf_lens, &pdf_dir);
-    const float dist2 = length_squared(cs->p_lens - v.p);
-    const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * abs_dot(v.ng, cs->wi) / dist2;
-    const float bsdf_rev_pdf = v.bsdf.pdf(cs->wi, v.wo, TransportMode::Radiance);
+    const float dist2 = length_squared(cs->p_lens - point.p);
+    const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * point.cosine(cs->wi) / dist2;
+    const float bsdf_rev_pdf = point.pdf(cs->wi, point.wo, TransportMode::Radiance);
     const float w_light = mis(camera_pdf_a / ctx.it.light_paths) *
-                          (ctx.w.vm_weight + m.d_vcm + m.d_vc * mis(bsdf_rev_pdf));
+                          (ctx.w.at(point.in_medium()).vm_weight + m.d_vcm + m.d_vc * mis(bsdf_rev_pdf));
     SampledSpectrum L = v.beta * f * cs->We * (1 / (cs->pdf * (1 + w_light)));
     if (L.is_black()) return;
     if (L.has_non_finite()) {
         ++ctx.pixel.non_finite;
         return;
     }
-    ++ctx.pixel.rays;
-    if (scene.occluded(spawn_ray_to(v.p, v.ng, cs->p_lens, Vec3f{}))) return;
-    scene.film->add_splat(cs->p_raster, L, lambda);
+    SampledSpectrum T = transmittance(scene, spawn_ray_between(point, cs->p_lens, Vec3f{}),
+                                      point.medium_towards(cs->wi), lambda, ctx.pixel.rays);
+    if (T.is_black()) return;
+    scene.film->add_splat(cs->p_raster, L * T, lambda);
 }
 
 // Traces the light subpath of one pixel with its group's wavelengths, appending its
@@ -175,52 +206,70 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
     SampledSpectrum beta(1.f);
     Ray ray = les->ray;
     Vec3f segment_start = ray.o;
+    // The path leaves the light into the medium around it (for an area light, the medium outside
+    // its shape, the side it emits to).
+    const Medium *medium = light.medium();
     const Material *absorbing_interior = nullptr;
     int path_length = 0;
     while (true) {
         SurfaceInteraction si;
         ++ctx.pixel.rays;
         bool hit = scene.intersect(ray, &si);
-        if (absorbing_interior) {
+        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
+                                               lambda, sampler);
+        beta *= segment.weight;
+        if (beta.is_black()) break;
+        ScatteringPoint point;
+        if (segment.scattered) {
+            point = medium_point(ray, segment.t, medium);
+        } else {
             if (!hit) break;
-            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * (si.t * length(ray.d)));
-            if (beta.is_black()) break;
-        }
-        if (!hit) break;
-        BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.pixel.iteration_scratch) : BSDF();
-        if (!bsdf) {
-            // A boundary between media only: the segment continues through it.
-            ray = si.spawn_ray(ray.d);
-            continue;
+            BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.pixel.iteration_scratch) : BSDF();
+            if (!bsdf) {
+                // A boundary between media only: the segment continues through it.
+                medium = medium_after(si, ray.d, medium);
+                ray = si.spawn_ray(ray.d);
+                continue;
+            }
+            point = surface_point(si, bsdf, medium);
         }
         ++path_length;
-        m.arrive(path_length > 1 || !at_infinity ? length_squared(si.p - segment_start) : 1.f,
-                 abs_dot(si.n, si.wo));
+        m.arrive(path_length > 1 || !at_infinity ? length_squared(point.p - segment_start) : 1.f,
+                 point.cosine(point.wo));
 
-        if (is_non_specular(bsdf.flags())) {
-            LightVertex v{si.p, si.n, si.shading.n, si.wo, bsdf, flux * beta, m.d_vcm, m.d_vc, m.d_vm,
-                          uint16_t(path_length), lambda.secondary_terminated()};
+        if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
+            LightVertex v{point, flux * beta, m.d_vcm, m.d_vc, m.d_vm, uint16_t(path_length),
+                          lambda.secondary_terminated()};
             store.push_back(v);
             if (it.use_vc) connect_to_camera(ctx, v, m, lambda);
         }
         // A vertex further along could not be part of a path within max_depth.
         if (path_length >= it.max_depth) break;
 
-        float u = sampler.get_1d();
-        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
-        if (!bs) break;
-        if (bs->dispersive && !lambda.secondary_terminated()) {
-            lambda.terminate_secondary();
-            drop_secondary(beta);
+        if (point.in_medium()) {
+            // The phase function is sampled exactly (f / pdf = 1) and is symmetric.
+            PhaseSample ps = medium->phase().sample_p(point.wo, sampler.get_2d());
+            m.scatter(ctx.w, ctx.w.medium, 1.f, ps.p, ps.p, false);
+            ray = Ray{point.p, ps.wi, Infinity};
+        } else {
+            const BSDF &bsdf = point.bsdf;
+            float u = sampler.get_1d();
+            auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
+            if (!bs) break;
+            if (bs->dispersive && !lambda.secondary_terminated()) {
+                lambda.terminate_secondary();
+                drop_secondary(beta);
+            }
+            const float pdf_dir = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, TransportMode::Importance) : bs->pdf;
+            const float pdf_rev = bsdf.pdf(bs->wi, si.wo, TransportMode::Radiance);
+            m.scatter(ctx.w, ctx.w.surface, abs_dot(si.n, bs->wi), pdf_dir, pdf_rev, bs->is_specular());
+            beta *= bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
+            if (bs->is_transmission() && si.material->has_interior_absorption())
+                absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+            medium = medium_after(si, bs->wi, medium);
+            ray = si.spawn_ray(bs->wi);
         }
-        const float pdf_dir = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, TransportMode::Importance) : bs->pdf;
-        const float pdf_rev = bsdf.pdf(bs->wi, si.wo, TransportMode::Radiance);
-        m.scatter(ctx.w, abs_dot(si.n, bs->wi), pdf_dir, pdf_rev, bs->is_specular());
-        beta *= bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
-        if (bs->is_transmission() && si.material->has_interior_absorption())
-            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-        ray = si.spawn_ray(bs->wi);
-        segment_start = si.p;
+        segment_start = point.p;
 
         // Russian roulette changes the throughput, not the densities: the MIS weights are
         // unaffected and remain a partition of unity.
@@ -237,8 +286,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
 // Camera subpaths
 
 struct CameraVertex {
-    const SurfaceInteraction &si;
-    const BSDF &bsdf;
+    const ScatteringPoint &point;
     const SubpathMis &m;
     int path_length;
 };
@@ -257,18 +305,19 @@ struct CameraPathContext {
 // could have produced the vertex (tech. report eq. 44).
 SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z) {
     const Scene &scene = ctx.it.scene;
+    const ScatteringPoint &point = z.point;
     Sampler &sampler = ctx.pixel.sampler;
     auto chosen = scene.light_sampler->sample(sampler.get_1d());
     Vec2f u = sampler.get_2d();
     if (!chosen) return {};
     const Light &light = *chosen->light;
-    auto ls = light.sample_li(LightSampleContext{z.si.p, z.si.n, z.si.shading.n}, u, ctx.lambda);
+    auto ls = light.sample_li(LightSampleContext{point.p, point.ng, point.ns}, u, ctx.lambda);
     if (!ls || ls->L.is_black() || !(ls->pdf > 0)) return {};
-    SampledSpectrum f = z.bsdf.f(z.si.wo, ls->wi, TransportMode::Radiance) * abs_dot(ls->wi, z.si.shading.n);
-    if (f.is_black()) return {};
+    const ScatteringPoint::Connection scattering = point.connect_towards(ls->wi, TransportMode::Radiance);
+    if (scattering.f.is_black()) return {};
 
     const bool at_infinity = ls->is_infinite || light.type() == LightType::DeltaDirection;
-    const float dist2 = at_infinity ? 1.f : length_squared(ls->p_light - z.si.p);
+    const float dist2 = at_infinity ? 1.f : length_squared(ls->p_light - point.p);
     const float cos_at_light = ls->n_light == Vec3f{} ? 1.f : abs_dot(ls->n_light, ls->wi);
     if (cos_at_light == 0) return {};
     EmissionDensities e = emission_densities(light, ls->p_light, ls->n_light, -ls->wi);
@@ -279,69 +328,68 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
     else if (light.type() == LightType::DeltaPosition) assumed_direct_pdf *= dist2;
     else if (light.type() == LightType::Infinite) assumed_direct_pdf *= e.pdf_dir;
     const float emission_pdf = chosen->pmf * e.pdf_pos * e.pdf_dir;
-    const float bsdf_dir_pdf = z.bsdf.pdf(z.si.wo, ls->wi, TransportMode::Radiance);
-    const float bsdf_rev_pdf = z.bsdf.pdf(ls->wi, z.si.wo, TransportMode::Importance);
-    const float w_light = is_delta_light(light.type()) ? 0.f : mis(bsdf_dir_pdf / assumed_direct_pdf);
-    const float w_camera = mis(emission_pdf * abs_dot(z.si.n, ls->wi) / (assumed_direct_pdf * cos_at_light)) *
-                           (ctx.w.vm_weight + z.m.d_vcm + z.m.d_vc * mis(bsdf_rev_pdf));
-    SampledSpectrum L = f * ls->L * (1 / (chosen->pmf * ls->pdf * (w_light + 1 + w_camera)));
+    const float w_light = is_delta_light(light.type()) ? 0.f : mis(scattering.pdf_forward / assumed_direct_pdf);
+    const float w_camera = mis(emission_pdf * point.cosine(ls->wi) / (assumed_direct_pdf * cos_at_light)) *
+                           (ctx.w.at(point.in_medium()).vm_weight + z.m.d_vcm + z.m.d_vc * mis(scattering.pdf_reverse));
+    SampledSpectrum L = scattering.f * ls->L * (1 / (chosen->pmf * ls->pdf * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
-    ++ctx.pixel.rays;
-    Ray shadow = ls->is_infinite ? z.si.spawn_ray(ls->wi) : z.si.spawn_ray_to(ls->p_light, ls->n_light);
-    if (scene.occluded(shadow)) return {};
-    return in_group_measure(L, ctx.lambda.secondary_terminated(), ctx.hero_scale);
+    Ray shadow = ls->is_infinite ? spawn_ray(point.p, point.ng, ls->wi) : spawn_ray_between(point, ls->p_light, ls->n_light);
+    SampledSpectrum T = transmittance(scene, shadow, point.medium_towards(ls->wi), ctx.lambda, ctx.pixel.rays);
+    if (T.is_black()) return {};
+    return in_group_measure(L * T, ctx.lambda.secondary_terminated(), ctx.hero_scale);
 }
 
 // Joins a camera vertex to one light vertex with a shadow ray (tech. report eqs. 40-41).
 SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, const LightVertex &v) {
-    Vec3f d = v.p - z.si.p;
+    const ScatteringPoint &camera = z.point, &light = v.point;
+    Vec3f d = light.p - camera.p;
     const float dist2 = length_squared(d);
     if (dist2 == 0) return {};
     d = d / std::sqrt(dist2);
-    SampledSpectrum f_camera = z.bsdf.f(z.si.wo, d, TransportMode::Radiance) * abs_dot(d, z.si.shading.n);
-    if (f_camera.is_black()) return {};
-    SampledSpectrum f_light = v.bsdf.f(v.wo, -d, TransportMode::Importance) *
-                              importance_cosine(v.ng, v.shading_n, v.wo, -d);
-    if (f_light.is_black()) return {};
+    const ScatteringPoint::Connection at_camera = camera.connect_towards(d, TransportMode::Radiance);
+    if (at_camera.f.is_black()) return {};
+    const ScatteringPoint::Connection at_light = light.connect_towards(-d, TransportMode::Importance);
+    if (at_light.f.is_black()) return {};
 
-    const float camera_dir_pdf = z.bsdf.pdf(z.si.wo, d, TransportMode::Radiance);
-    const float camera_rev_pdf = z.bsdf.pdf(d, z.si.wo, TransportMode::Importance);
-    const float light_dir_pdf = v.bsdf.pdf(v.wo, -d, TransportMode::Importance);
-    const float light_rev_pdf = v.bsdf.pdf(-d, v.wo, TransportMode::Radiance);
-    const float camera_dir_pdf_a = camera_dir_pdf * abs_dot(v.ng, d) / dist2;
-    const float light_dir_pdf_a = light_dir_pdf * abs_dot(z.si.n, d) / dist2;
-    const float w_light = mis(camera_dir_pdf_a) * (ctx.w.vm_weight + v.d_vcm + v.d_vc * mis(light_rev_pdf));
-    const float w_camera = mis(light_dir_pdf_a) * (ctx.w.vm_weight + z.m.d_vcm + z.m.d_vc * mis(camera_rev_pdf));
-    SampledSpectrum L = f_camera * f_light * v.beta * (1 / (dist2 * (w_light + 1 + w_camera)));
+    const float camera_dir_pdf_a = at_camera.pdf_forward * light.cosine(d) / dist2;
+    const float light_dir_pdf_a = at_light.pdf_forward * camera.cosine(d) / dist2;
+    const float w_light = mis(camera_dir_pdf_a) *
+                          (ctx.w.at(light.in_medium()).vm_weight + v.d_vcm + v.d_vc * mis(at_light.pdf_reverse));
+    const float w_camera = mis(light_dir_pdf_a) *
+                           (ctx.w.at(camera.in_medium()).vm_weight + z.m.d_vcm + z.m.d_vc * mis(at_camera.pdf_reverse));
+    SampledSpectrum L = at_camera.f * at_light.f * v.beta * (1 / (dist2 * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
-    ++ctx.pixel.rays;
-    if (ctx.it.scene.occluded(spawn_ray_to(z.si.p, z.si.n, v.p, v.ng))) return {};
-    return in_group_measure(L, ctx.lambda.secondary_terminated() || v.secondary_terminated, ctx.hero_scale);
+    SampledSpectrum T = transmittance(ctx.it.scene, spawn_ray_between(camera, light.p, light.ng),
+                                      camera.medium_towards(d), ctx.lambda, ctx.pixel.rays);
+    if (T.is_black()) return {};
+    return in_group_measure(L * T, ctx.lambda.secondary_terminated() || v.secondary_terminated, ctx.hero_scale);
 }
 
-// Gathers the photons of the camera vertex's wavelength group within the merge radius (tech.
-// report eqs. 42-43), normalised by pi r^2 times the group's light-path count.
-SampledSpectrum merge(const CameraPathContext &ctx, const CameraVertex &z, const RangeSearch &search,
-                      const std::vector<Photon> &photons, std::vector<uint32_t> &found) {
-    search.find_within(z.si.p, ctx.it.radius, found);
+// Gathers the photons of the camera vertex's wavelength group within the merge radius on its
+// surface (tech. report eqs. 42-43), normalised by pi r^2 times the group's light-path count.
+SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVertex &z, const PhotonMap &map,
+                                 std::vector<uint32_t> &found) {
+    const ScatteringPoint &point = z.point;
+    const MergeWeights &here = ctx.w.surface;
+    map.search->find_within(point.p, ctx.it.radius, found);
     SampledSpectrum sum(0.f);
     for (uint32_t index : found) {
-        const Photon &photon = photons[index];
+        const Photon &photon = map.photons[index];
         // The merged vertex belongs to both subpaths.
         if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) continue;
-        if (!same_surface(decode_octahedral(photon.normal), z.si.n)) continue;
+        if (!same_surface(decode_octahedral(photon.normal), point.ng)) continue;
         const Vec3f wi = decode_octahedral(photon.wo);
-        const float cos_ng = abs_dot(wi, z.si.n);
+        const float cos_ng = abs_dot(wi, point.ng);
         if (cos_ng == 0) continue;
-        SampledSpectrum f = z.bsdf.f(z.si.wo, wi, TransportMode::Radiance);
+        SampledSpectrum f = point.bsdf.f(point.wo, wi, TransportMode::Radiance);
         if (f.is_black()) continue;
-        const float camera_dir_pdf = z.bsdf.pdf(z.si.wo, wi, TransportMode::Radiance);
-        const float camera_rev_pdf = z.bsdf.pdf(wi, z.si.wo, TransportMode::Importance);
-        const float w_light = photon.d_vcm * ctx.w.vc_weight + photon.d_vm * mis(camera_dir_pdf);
-        const float w_camera = z.m.d_vcm * ctx.w.vc_weight + z.m.d_vm * mis(camera_rev_pdf);
+        const float camera_dir_pdf = point.bsdf.pdf(point.wo, wi, TransportMode::Radiance);
+        const float camera_rev_pdf = point.bsdf.pdf(wi, point.wo, TransportMode::Importance);
+        const float w_light = photon.d_vcm * here.vc_weight + photon.d_vm * mis(camera_dir_pdf);
+        const float w_camera = z.m.d_vcm * here.vc_weight + z.m.d_vm * mis(camera_rev_pdf);
         // Photon density is flux per unit of geometric area; the shading-normal BSDF turns it
         // into radiance with |wi.ns| / |wi.ng| (the adjoint correction, Veach 1997, 5.3).
-        const float shading = abs_dot(wi, z.si.shading.n) / cos_ng;
+        const float shading = abs_dot(wi, point.ns) / cos_ng;
         sum += in_group_measure(f * photon.beta() * (shading / (w_light + 1 + w_camera)),
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
@@ -349,12 +397,61 @@ SampledSpectrum merge(const CameraPathContext &ctx, const CameraVertex &z, const
     return sum * ctx.it.vm_normalization[ctx.group];
 }
 
+// Gathers the photons that the camera vertex's group deposited in media within a sphere of the
+// merge radius around a camera vertex in a medium: the volumetric photon map's estimate (Jensen
+// and Christensen 1998) as a VCM strategy.
+//
+// The estimator. Let the full path have its scattering vertex x in the medium, with the light
+// subpath's vertex y and the camera subpath's vertex z standing in for it. Its contribution is
+// f(path) = F_light(..., x) sigma_s(x) p(w_camera, w_light) F_camera(x, ...), where F_light and
+// F_camera are the products of emission, importance, scattering functions and geometry terms
+// (with transmittance) on either side, and sigma_s(x) p is the scattering function of a medium
+// vertex in the volume measure. Each subpath's throughput reaches its vertex through a
+// free-flight sample whose weight is sigma_s T / (distance density) (path_segment.h), so
+//   beta_light = F_light sigma_s(y) / p_light(y_0 .. y),   beta_camera = F_camera sigma_s(z) / p_camera(z_0 .. z),
+// each over its subpath's density of generating its vertices, the last one per unit volume. A
+// light path's y falls within distance r of z with probability p_light(y) V, V = 4/3 pi r^3,
+// for each of the N_group light paths: summing over the photons found and dividing by V N_group
+// turns p_light(y_0 .. y) into p_light(y_0 .. y_prev) and leaves an unbiased estimate of the
+// connection-free integral as r -> 0. The product beta_light beta_camera p holds sigma_s twice
+// while f has it once, so one sigma_s(z) is divided out (at a wavelength where sigma_s is zero,
+// beta_camera is already zero there, and so is the estimate). No cosine appears: the kernel is
+// a sphere, not a disk, and the vertex has no surface. MIS: the merge at a medium vertex has
+// eta = V N_group times the density of the connection ending there (vcm_mis.h), with d_vm
+// rescaled from its surface reference by d_vm_scale.
+SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex &z, const PhotonMap &map,
+                                std::vector<uint32_t> &found) {
+    const ScatteringPoint &point = z.point;
+    const MergeWeights &here = ctx.w.medium;
+    const HenyeyGreenstein &phase = point.medium->phase();
+    map.search->find_within(point.p, ctx.it.radius, found);
+    SampledSpectrum sum(0.f);
+    for (uint32_t index : found) {
+        const Photon &photon = map.photons[index];
+        if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) continue;
+        const Vec3f wi = decode_octahedral(photon.wo);
+        // The phase function is its own sampling density, and symmetric: it is also the density
+        // with which the camera (from wo) and the light subpath (from wi) sample each other.
+        const float p = phase.p(point.wo, wi);
+        const float w_light = photon.d_vcm * here.vc_weight + photon.d_vm * here.d_vm_scale * mis(p);
+        const float w_camera = z.m.d_vcm * here.vc_weight + z.m.d_vm * here.d_vm_scale * mis(p);
+        sum += in_group_measure(photon.beta() * (p / (w_light + 1 + w_camera)),
+                                ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
+                                ctx.hero_scale);
+    }
+    const SampledSpectrum sigma_s = point.medium->sigma_s(ctx.lambda);
+    SampledSpectrum inverse_sigma_s(0.f);
+    for (int i = 0; i < NumWavelengths; ++i)
+        if (sigma_s[i] > 0) inverse_sigma_s[i] = 1 / sigma_s[i];
+    return sum * inverse_sigma_s * ctx.it.volume_normalization[ctx.group];
+}
+
 // Radiance of the camera subpath of one pixel (tech. report section 5), in the measure of its
 // group's full wavelength set.
 SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pixel, int group,
                                   const CameraRay &camera_ray, SampledWavelengths &lambda,
-                                  const StoredPath &light_path, const RangeSearch *search,
-                                  const std::vector<Photon> &photons, std::vector<uint32_t> &found) {
+                                  const StoredPath &light_path, const PhotonMap &surface_photons,
+                                  const PhotonMap &medium_photons, std::vector<uint32_t> &found) {
     const Scene &scene = it.scene;
     Sampler &sampler = pixel.sampler;
     const VcmWeights &w = it.weights[group];
@@ -374,6 +471,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     Ray ray = camera_ray.ray;
     Vec3f segment_start = ray.o;
     LightSampleContext previous{ray.o, Vec3f{}, Vec3f{}};
+    const Medium *medium = scene.camera_medium;
     const Material *absorbing_interior = nullptr;
     int path_length = 0;
     auto add = [&](const SampledSpectrum &contribution) {
@@ -383,12 +481,11 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
         SurfaceInteraction si;
         ++pixel.rays;
         bool hit = scene.intersect(ray, &si);
-        if (absorbing_interior) {
-            if (!hit) break;
-            beta *= exp(-absorbing_interior->interior_sigma_a(lambda) * (si.t * length(ray.d)));
-            if (beta.is_black()) break;
-        }
-        if (!hit) {
+        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
+                                               lambda, sampler);
+        beta *= segment.weight;
+        if (beta.is_black()) break;
+        if (!segment.scattered && !hit) {
             // Environment light: the camera path's own strategy, against next-event estimation
             // of the same direction and the light subpaths that start from it.
             for (const Light *light : scene.infinite_lights) {
@@ -407,15 +504,22 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
             }
             break;
         }
-        BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, pixel.sample_scratch) : BSDF();
-        if (!bsdf && !si.area_light) {
-            ray = si.spawn_ray(ray.d);
-            continue;
+        ScatteringPoint point;
+        if (segment.scattered) {
+            point = medium_point(ray, segment.t, medium);
+        } else {
+            BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, pixel.sample_scratch) : BSDF();
+            if (!bsdf && !si.area_light) {
+                medium = medium_after(si, ray.d, medium);
+                ray = si.spawn_ray(ray.d);
+                continue;
+            }
+            point = surface_point(si, bsdf, medium);
         }
         ++path_length;
-        m.arrive(length_squared(si.p - segment_start), abs_dot(si.n, si.wo));
+        m.arrive(length_squared(point.p - segment_start), point.cosine(point.wo));
 
-        if (si.area_light) {
+        if (!point.in_medium() && si.area_light) {
             SampledSpectrum Le = si.area_light->L(si.p, si.n, si.uv, si.wo, lambda);
             if (!Le.is_black()) {
                 if (path_length == 1) {
@@ -429,10 +533,10 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                 }
             }
         }
-        if (!bsdf || path_length > it.max_depth) break;
+        if ((!point.in_medium() && !point.bsdf) || path_length > it.max_depth) break;
 
-        if (is_non_specular(bsdf.flags())) {
-            const CameraVertex z{si, bsdf, m, path_length};
+        if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
+            const CameraVertex z{point, m, path_length};
             if (it.use_vc) {
                 L += beta * sample_light(ctx, z);
                 for (uint32_t i = 0; i < light_path.count; ++i) {
@@ -441,30 +545,42 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                     L += beta * connect(ctx, z, v);
                 }
             }
-            if (it.use_vm && search) L += beta * merge(ctx, z, *search, photons, found);
+            if (it.use_vm)
+                L += beta * (point.in_medium() ? merge_in_medium(ctx, z, medium_photons, found)
+                                               : merge_on_surface(ctx, z, surface_photons, found));
         }
         // Scattering on from vertex max_depth can still reach an emitter (a path of max_depth
         // scattering events, as the path tracer counts them); the next vertex ends the path.
 
-        float u = sampler.get_1d();
-        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
-        if (!bs) break;
-        if (bs->dispersive && !lambda.secondary_terminated()) {
-            lambda.terminate_secondary();
-            drop_secondary(beta);
+        if (point.in_medium()) {
+            // The phase function is sampled exactly (f / pdf = 1) and is symmetric.
+            PhaseSample ps = medium->phase().sample_p(point.wo, sampler.get_2d());
+            m.scatter(w, w.medium, 1.f, ps.p, ps.p, false);
+            previous = LightSampleContext{point.p, Vec3f{}, Vec3f{}};
+            ray = Ray{point.p, ps.wi, Infinity};
+        } else {
+            const BSDF &bsdf = point.bsdf;
+            float u = sampler.get_1d();
+            auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
+            if (!bs) break;
+            if (bs->dispersive && !lambda.secondary_terminated()) {
+                lambda.terminate_secondary();
+                drop_secondary(beta);
+            }
+            const float pdf_dir_bsdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
+            const float pdf_rev_bsdf = bsdf.pdf(bs->wi, si.wo, TransportMode::Importance);
+            m.scatter(w, w.surface, abs_dot(si.n, bs->wi), pdf_dir_bsdf, pdf_rev_bsdf, bs->is_specular());
+            beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
+            if (bs->is_transmission()) {
+                eta_scale *= sqr(bs->eta);
+                if (si.material->has_interior_absorption())
+                    absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+            }
+            previous = LightSampleContext{si.p, si.n, si.shading.n};
+            medium = medium_after(si, bs->wi, medium);
+            ray = si.spawn_ray(bs->wi);
         }
-        const float pdf_dir_bsdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
-        const float pdf_rev_bsdf = bsdf.pdf(bs->wi, si.wo, TransportMode::Importance);
-        m.scatter(w, abs_dot(si.n, bs->wi), pdf_dir_bsdf, pdf_rev_bsdf, bs->is_specular());
-        beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
-        if (bs->is_transmission()) {
-            eta_scale *= sqr(bs->eta);
-            if (si.material->has_interior_absorption())
-                absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-        }
-        previous = LightSampleContext{si.p, si.n, si.shading.n};
-        ray = si.spawn_ray(bs->wi);
-        segment_start = si.p;
+        segment_start = point.p;
 
         // Russian roulette on beta * eta^2, as in the path tracer (pbrt-v4 14.1).
         SampledSpectrum rr_beta = beta * eta_scale;
@@ -488,10 +604,12 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     const bool use_vc = mode_ == Mode::VertexConnectionMerging;
     WavelengthGroups groups(wavelength_groups_, scene.overrides.seed);
 
-    std::vector<std::unique_ptr<RangeSearch>> searches;
-    for (int g = 0; g < wavelength_groups_; ++g) searches.push_back(create_range_search(photon_search_));
-    std::vector<std::vector<Vec3f>> photon_positions(wavelength_groups_);
-    std::vector<std::vector<Photon>> photons(wavelength_groups_);
+    // Per wavelength group.
+    std::vector<PhotonMap> surface_photons(wavelength_groups_), medium_photons(wavelength_groups_);
+    for (int g = 0; g < wavelength_groups_; ++g) {
+        surface_photons[g].search = create_range_search(photon_search_);
+        medium_photons[g].search = create_range_search(photon_search_);
+    }
     tbb::enumerable_thread_specific<std::vector<LightVertex>> light_vertices;
     tbb::enumerable_thread_specific<std::vector<uint32_t>> found;
     std::vector<StoredPath> light_paths(pixel_count);
@@ -503,12 +621,16 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     renderer.run([&](int iteration) {
         groups.start_iteration(scene, iteration, pixel_count, pixel_count);
         const float radius = base_radius_ * std::pow(float(iteration + 1), (alpha_ - 1) / 2);
-        Iteration it{scene, max_depth_, use_vc, true, radius, groups, {}, {},
+        Iteration it{scene, max_depth_, use_vc, true, radius, groups, {}, {}, {},
                      float(pixel_count), float(full.x) * float(full.y)};
         for (int g = 0; g < groups.count(); ++g) {
-            const float eta_vcm = Pi * radius * radius * float(std::max<size_t>(groups.light_path_count(g), 1));
-            it.weights.push_back(VcmWeights::make(use_vc, true, eta_vcm));
+            const float light_path_count = float(std::max<size_t>(groups.light_path_count(g), 1));
+            // The kernels' acceptance regions times the light paths gathered (vcm_mis.h).
+            const float eta_vcm = Pi * radius * radius * light_path_count;
+            const float eta_volume = 4.f / 3.f * Pi * radius * radius * radius * light_path_count;
+            it.weights.push_back(VcmWeights::make(use_vc, true, eta_vcm, eta_volume));
             it.vm_normalization.push_back(1 / eta_vcm);
+            it.volume_normalization.push_back(1 / eta_volume);
         }
 
         // Pass 1: one light subpath per pixel, stored and connected to the lens.
@@ -527,22 +649,29 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
 
         // The photons of each wavelength group, in pixel order so that results do not depend on
         // which thread traced which path.
-        for (int g = 0; g < groups.count(); ++g) {
-            photon_positions[g].clear();
-            photons[g].clear();
-        }
+        for (int g = 0; g < groups.count(); ++g)
+            for (PhotonMap *map : {&surface_photons[g], &medium_photons[g]}) {
+                map->positions.clear();
+                map->photons.clear();
+            }
         for (size_t index = 0; index < pixel_count; ++index) {
             const StoredPath &path = light_paths[index];
             const int g = groups.group_of_pixel(index);
             for (uint32_t i = 0; i < path.count; ++i) {
                 const LightVertex &v = (*path.vertices)[path.begin + i];
-                photon_positions[g].push_back(v.p);
-                photons[g].push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm, encode_octahedral(v.wo),
-                                            encode_octahedral(v.ng), v.path_length,
-                                            uint16_t(v.secondary_terminated)});
+                const ScatteringPoint &point = v.point;
+                PhotonMap &map = point.in_medium() ? medium_photons[g] : surface_photons[g];
+                map.positions.push_back(point.p);
+                map.photons.push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm,
+                                             encode_octahedral(point.wo),
+                                             point.in_medium() ? 0u : encode_octahedral(point.ng), v.path_length,
+                                             uint16_t(v.secondary_terminated)});
             }
         }
-        for (int g = 0; g < groups.count(); ++g) searches[g]->build(photon_positions[g], radius);
+        for (int g = 0; g < groups.count(); ++g) {
+            surface_photons[g].search->build(surface_photons[g].positions, radius);
+            medium_photons[g].search->build(medium_photons[g].positions, radius);
+        }
 
         // Pass 2: one camera subpath per pixel.
         Film &film = *scene.film;
@@ -554,8 +683,8 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
             SampledSpectrum L(0.f);
             if (auto camera_ray = scene.camera->generate_ray(cs, lambda)) {
-                L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_paths[index], searches[g].get(),
-                                      photons[g], found.local());
+                L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_paths[index], surface_photons[g],
+                                      medium_photons[g], found.local());
                 if (L.has_non_finite()) {
                     ++ctx.non_finite;
                     L = SampledSpectrum(0.f);

@@ -13,6 +13,13 @@
 // that the merging bias vanishes while its variance stays bounded (Knaus and Zwicker 2011).
 // bpm keeps only the merges and the camera paths' own light hits.
 //
+// Participating media: both subpaths scatter inside media (path_segment.h), and their medium
+// vertices are connected, light-sampled and splatted like surface ones (phase function in place
+// of the BSDF, no cosine), with transmittance along every connection. Light vertices in media
+// become photons of their own maps, which camera vertices in media gather within a sphere of
+// radius r (volumetric photon mapping, Jensen and Christensen 1998), weighted against the other
+// strategies as in Krivanek et al. 2014 (see vcm_mis.h and merge_in_medium in vcm.cpp).
+//
 // Spectral: pixels are split into wavelength groups per iteration (wavelength_groups.h); light
 // and camera subpaths that are connected or merged always share the group's wavelengths. A
 // dispersive refraction on either subpath keeps the hero wavelength only for what it joins.

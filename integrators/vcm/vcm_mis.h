@@ -10,7 +10,11 @@
 //   d_vm   the same, used when it is completed by a merge.
 // The weights are power-heuristic (mis(x) = x^2), and every density is in the area measure at
 // its vertex; the conversion from solid angle happens lazily, the distance squared when a vertex
-// is reached and the cosines as each is known.
+// is reached and the cosines as each is known. A vertex inside a participating medium has no
+// normal: its density is per unit volume, every cosine of a conversion at it is 1, and its
+// scattering function is the phase function. The densities of free-flight distance sampling are
+// left out of every strategy's density, on both subpaths alike (as pbrt-v3/v4's BDPT do): the
+// weights are then those of a consistent set of per-strategy densities and still sum to one.
 //
 // The strategy families can be switched off (bpm has no connections; vcm has both): a disabled
 // family's terms are removed from every sum, so the remaining weights still sum to one.
@@ -20,23 +24,50 @@ namespace caustica {
 
 inline float mis(float density_ratio) { return density_ratio * density_ratio; }
 
-// Per-iteration constants. eta_vcm = pi r^2 N_group is the ratio of the merging density to the
-// connection density (a camera vertex gathers the N_group light paths of its wavelength group
-// within radius r, but connects to one).
+// What merging weighs at one kind of vertex. A camera vertex gathers the N_group light paths of
+// its wavelength group within the kernel's acceptance region, but connects to one, so a merge has
+// eta = |region| N_group times the density of the connection that ends at the same vertex
+// (Georgiev et al. 2012, eq. 11): |region| = pi r^2 on a surface, where the kernel is a disk and
+// densities are per unit area, and 4/3 pi r^3 in a medium, where it is a sphere and densities are
+// per unit volume (the volumetric photon map's sphere, Jensen and Christensen 1998; its place
+// among VCM's strategies is the "point-point 3D" estimator of Krivanek et al. 2014, "Unifying
+// points, beams, and paths in volumetric light transport simulation").
+//
+// d_vm is kept relative to a merge on a SURFACE (its terms are divided by eta_surface rather than
+// by the eta of whatever vertex it ends up merged at, which is unknown while the subpath is being
+// extended). With eta the same at every vertex this is Georgiev's recursion unchanged; a medium
+// vertex contributes merge_ratio = mis(eta_medium / eta_surface) where a surface vertex
+// contributes 1, and a merge at a medium vertex rescales d_vm by d_vm_scale, the inverse. (Every
+// term of d_vm is a strategy's density over the merge's, whose eta is the merge vertex's; no
+// other strategy's density contains that eta, so the rescaling is exact.)
+struct MergeWeights {
+    float vm_weight = 0;   // mis(eta) when merging is on: a merge at this vertex relative to a connection
+    float vc_weight = 0;   // mis(1 / eta) when connecting is on: the converse, for a merge here
+    float merge_ratio = 1; // mis(eta / eta_surface), see above
+    float d_vm_scale = 1;  // mis(eta_surface / eta)
+};
+
+// Per-iteration constants.
 struct VcmWeights {
-    float vm_weight = 0;      // mis(eta_vcm) when merging is on: a merge relative to a connection
-    float vc_weight = 0;      // mis(1 / eta_vcm) when connecting is on: the converse
+    MergeWeights surface, medium;
     float vc_enabled = 0;     // 1 when connecting is on (it weighs the connection terms of d_vc)
-    // mis(1 / eta_vcm): a camera path hitting the light, relative to a merge. That strategy
-    // exists whatever the families, so unlike vc_weight it is not switched off with them.
+    // mis(1 / eta_surface): a camera path hitting the light, relative to a surface merge (d_vm's
+    // reference). That strategy exists whatever the families, so unlike the vc_weights it is
+    // not switched off with them.
     float light_hit_weight = 0;
 
-    static VcmWeights make(bool use_vc, bool use_vm, float eta_vcm) {
+    const MergeWeights &at(bool in_medium) const { return in_medium ? medium : surface; }
+
+    static VcmWeights make(bool use_vc, bool use_vm, float eta_surface, float eta_medium) {
         VcmWeights w;
-        w.vm_weight = use_vm ? mis(eta_vcm) : 0.f;
-        w.vc_weight = use_vc ? mis(1 / eta_vcm) : 0.f;
+        w.surface.vm_weight = use_vm ? mis(eta_surface) : 0.f;
+        w.surface.vc_weight = use_vc ? mis(1 / eta_surface) : 0.f;
+        w.medium.vm_weight = use_vm ? mis(eta_medium) : 0.f;
+        w.medium.vc_weight = use_vc ? mis(1 / eta_medium) : 0.f;
+        w.medium.merge_ratio = mis(eta_medium / eta_surface);
+        w.medium.d_vm_scale = mis(eta_surface / eta_medium);
         w.vc_enabled = use_vc ? 1.f : 0.f;
-        w.light_hit_weight = use_vm ? mis(1 / eta_vcm) : 0.f;
+        w.light_hit_weight = use_vm ? mis(1 / eta_surface) : 0.f;
         return w;
     }
 };
@@ -56,8 +87,10 @@ struct SubpathMis {
 
     // The subpath continues from this vertex in a direction sampled with solid-angle density
     // pdf_dir (pdf_rev: the reverse direction's density), leaving at cosine cos_out with the
-    // geometric normal. A specular sample has equal delta densities both ways, which cancel.
-    void scatter(const VcmWeights &w, float cos_out, float pdf_dir, float pdf_rev, bool specular) {
+    // geometric normal (1 at a medium vertex). A specular sample has equal delta densities both
+    // ways, which cancel. here: the merge weights of this vertex's kind.
+    void scatter(const VcmWeights &w, const MergeWeights &here, float cos_out, float pdf_dir, float pdf_rev,
+                 bool specular) {
         if (specular) {
             d_vcm = 0;
             d_vc *= mis(cos_out);
@@ -65,8 +98,8 @@ struct SubpathMis {
             return;
         }
         const float g = mis(cos_out / pdf_dir);
-        d_vc = g * (d_vc * mis(pdf_rev) + w.vc_enabled * d_vcm + w.vm_weight);
-        d_vm = g * (d_vm * mis(pdf_rev) + d_vcm * w.vc_weight + 1);
+        d_vc = g * (d_vc * mis(pdf_rev) + w.vc_enabled * d_vcm + here.vm_weight);
+        d_vm = g * (d_vm * mis(pdf_rev) + d_vcm * w.surface.vc_weight + here.merge_ratio);
         d_vcm = mis(1 / pdf_dir);
     }
 };

@@ -1,0 +1,71 @@
+// Where a VCM subpath scatters: a surface point with its BSDF, or a point inside a participating
+// medium with the medium's phase function. A medium point has no normal, so every cosine at it
+// is 1, and the phase function is symmetric, so radiance and importance transport see the same
+// function there (no 1/eta^2, no shading-normal correction). Camera and light vertices are both
+// built on it, so that connections and light sampling treat the two kinds alike.
+#pragma once
+
+#include "integrators/common/path_vertex.h"
+#include "materials/bsdf.h"
+#include "media/medium.h"
+
+namespace caustica {
+
+struct ScatteringPoint {
+    Vec3f p;
+    Vec3f ng, ns;       // geometric and shading normals; zero in a medium
+    Vec3f wo;           // towards the previous vertex of the subpath
+    BSDF bsdf;          // surface points
+    const Medium *medium = nullptr; // medium points: the medium the point lies in
+    // Surface points: the media on the side ng points to and on the other (the medium the path
+    // arrived in on both, unless the surface is a transition between media).
+    const Medium *medium_front = nullptr, *medium_back = nullptr;
+
+    bool in_medium() const { return medium != nullptr; }
+
+    // The medium a ray leaving the point in direction w travels through.
+    const Medium *medium_towards(Vec3f w) const {
+        if (in_medium()) return medium;
+        return dot(w, ng) > 0 ? medium_front : medium_back;
+    }
+
+    // |cos| between w and the geometric normal, as area <-> solid angle conversions use it.
+    float cosine(Vec3f w) const { return in_medium() ? 1.f : abs_dot(ng, w); }
+
+    // The scattering function towards wi times its cosine: for radiance, the BSDF times
+    // |wi.ns|; for importance, with the adjoint shading-normal correction (Veach 1997, 5.3).
+    SampledSpectrum f(Vec3f wi, TransportMode mode) const {
+        if (in_medium()) return SampledSpectrum(medium->phase().p(wo, wi));
+        if (mode == TransportMode::Radiance) return bsdf.f(wo, wi, mode) * abs_dot(wi, ns);
+        return bsdf.f(wo, wi, mode) * importance_cosine(ng, ns, wo, wi);
+    }
+
+    // Solid-angle density of sampling `to` from `from` in the given transport mode.
+    float pdf(Vec3f from, Vec3f to, TransportMode mode) const {
+        if (in_medium()) return medium->phase().pdf(from, to);
+        return bsdf.pdf(from, to, mode);
+    }
+
+    // What joining this point to another in direction w needs (a connection, a light sample):
+    // f(w, mode), the density of sampling w from wo in that mode, and the density of sampling
+    // wo from w in the adjoint mode (the other subpath's direction). The densities are left
+    // zero when f is, as the caller then drops the connection.
+    struct Connection {
+        SampledSpectrum f;
+        float pdf_forward = 0, pdf_reverse = 0;
+    };
+    Connection connect_towards(Vec3f w, TransportMode mode) const {
+        Connection c{f(w, mode)};
+        if (c.f.is_black()) return c;
+        if (in_medium()) {
+            c.pdf_forward = c.pdf_reverse = medium->phase().pdf(wo, w);
+            return c;
+        }
+        const TransportMode adjoint = mode == TransportMode::Radiance ? TransportMode::Importance : TransportMode::Radiance;
+        c.pdf_forward = bsdf.pdf(wo, w, mode);
+        c.pdf_reverse = bsdf.pdf(w, wo, adjoint);
+        return c;
+    }
+};
+
+} // namespace caustica
