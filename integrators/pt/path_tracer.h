@@ -1,6 +1,8 @@
 // Unidirectional path tracing with next-event estimation and multiple importance sampling
 // (Veach 1997, ch. 9: power heuristic between light sampling and BSDF sampling), Russian
-// roulette, and hero-wavelength termination at dispersive refraction.
+// roulette, and hero-wavelength termination at dispersive refraction. Subsurface scattering by a
+// profile (the Disney material's diffusion and dipole models) is rendered here only: a path that
+// enters such a surface continues from an exit point sampled with probe rays.
 #pragma once
 
 #include "integrators/integrator.h"

@@ -73,6 +73,7 @@ DisneyBxDF::DisneyBxDF(const DisneyParameters &p)
       clearcoat_alpha_(clearcoat_alpha(p.clearcoat_gloss)),
       thin_(p.thin),
       subsurface_(p.subsurface && !p.thin),
+      profile_subsurface_(subsurface_ && p.profile_subsurface),
       diff_trans_(p.thin ? p.diff_trans : 0),
       flatness_(p.thin ? p.flatness : 0),
       specular_(specular_distribution(p.roughness, p.anisotropic)),
@@ -268,11 +269,14 @@ float DisneyBxDF::clearcoat_f(Vec3f wo, Vec3f wi, bool coated) const {
 SampledSpectrum DisneyBxDF::subsurface_f(Vec3f wo, Vec3f wi) const {
     if (!present_[Subsurface]) return {};
     float crossing = dielectric_weight_ * InvPi;
+    // A profile's entry is a discrete event (sample_f), not a direction.
+    if (wo.z > 0 && profile_subsurface_) return {};
     if (wo.z > 0) return SampledSpectrum(wi.z < 0 ? crossing * (1 - schlick_weight(wo.z) / 2) : 0.f);
     return SampledSpectrum(wi.z > 0 ? crossing * (1 - schlick_weight(wi.z) / 2) : crossing / 42);
 }
 
 float DisneyBxDF::subsurface_pdf(Vec3f wo, Vec3f wi, const LobeProbabilities &lobes) const {
+    if (wo.z > 0 && profile_subsurface_) return 0;
     if (wo.z > 0) return wi.z < 0 ? lobes.p[Subsurface] * cosine_hemisphere_pdf(-wi.z) : 0;
     return wi.z > 0 ? lobes.p[Subsurface] * cosine_hemisphere_pdf(wi.z)
                     : lobes.p[InternalReflection] * cosine_hemisphere_pdf(-wi.z);
@@ -376,6 +380,13 @@ std::optional<BSDFSample> DisneyBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tran
             return g;
         }
         s = *g;
+    } else if (lobe == Subsurface && wo.z > 0 && profile_subsurface_) {
+        // The profile's entry: straight in (|cos| = 1), carrying the share that enters.
+        s.wi = Vec3f(0, 0, -1);
+        s.f = SampledSpectrum(dielectric_weight_ * (1 - schlick_weight(wo.z) / 2));
+        s.pdf = p;
+        s.flags = BxDFDiffuseTransmission;
+        return s;
     } else if (lobe == Subsurface || lobe == InternalReflection) {
         // Cosine-distributed on the side the lobe leads to: the crossing goes to the other
         // side of wo, the internal reflection stays inside.
@@ -443,6 +454,28 @@ std::optional<BSDFSample> DisneyBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tran
         for (int i = 1; i < NumWavelengths; ++i) s.f[i] = 0;
     if (s.pdf == 0) return {};
     return s;
+}
+
+SampledSpectrum DisneySubsurfaceExitBxDF::f(Vec3f wo, Vec3f wi, TransportMode) const {
+    if (!(wo.z < 0 && wi.z > 0)) return {};
+    return SampledSpectrum(InvPi * (1 - schlick_weight(wi.z) / 2));
+}
+
+std::optional<BSDFSample> DisneySubsurfaceExitBxDF::sample_f(Vec3f wo, float, Vec2f u, TransportMode mode,
+                                                             SampleFlags flags) const {
+    if (!(wo.z < 0) || !allows(flags, SampleFlags::Transmission)) return {};
+    BSDFSample s;
+    s.wi = sample_cosine_hemisphere(u);
+    if (s.wi.z == 0) return {};
+    s.f = f(wo, s.wi, mode);
+    s.pdf = cosine_hemisphere_pdf(s.wi.z);
+    s.flags = BxDFDiffuseTransmission;
+    return s;
+}
+
+float DisneySubsurfaceExitBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) const {
+    if (!(wo.z < 0 && wi.z > 0) || !allows(flags, SampleFlags::Transmission)) return 0;
+    return cosine_hemisphere_pdf(wi.z);
 }
 
 } // namespace caustica

@@ -53,6 +53,17 @@
 // dielectric BRDF's blend weight; the crossing is colourless (the colour comes from the volume).
 // From inside only these two lobes and the specular BSDF act.
 //
+// Subsurface with a profile (diffusion or dipole, `profile_subsurface`). There is no interior
+// volume: the path tracer samples where the light leaves from a radial profile (a separable
+// BSSRDF, see DisneyMaterial). The profile does not depend on the direction in which light
+// entered, so from outside the crossing is a discrete event rather than a direction: sample_f
+// returns it with wi straight into the surface, flags BxDFDiffuseTransmission, pdf the lobe's
+// selection probability and f |cos| = w (1 - F_V / 2), the share that enters; f() and pdf() leave
+// it out, since no light scatters into a direction there (next-event estimation and the MIS
+// densities of the other lobes must not see it). It is the only diffuse transmission a solid
+// samples from outside, which is how the path tracer recognises it. The exit lobe is
+// DisneySubsurfaceExitBxDF below. From inside, the lobes are the random walk's.
+//
 // Sampling picks one lobe with probability proportional to an estimate of its directional
 // albedo at wo (any positive choice is unbiased; a good one keeps f |cos| / pdf near the total
 // albedo). For non-delta samples f and pdf are the whole BSDF's: pdf is the sum over lobes of
@@ -91,7 +102,9 @@ struct DisneyParameters {
     bool thin = false;
     float diff_trans = 0;  // [0, 2], thin surfaces only
     float flatness = 0;    // [0, 1], thin surfaces only
-    bool subsurface = false; // solids only: random-walk subsurface (see above)
+    bool subsurface = false; // solids only: subsurface scattering (see above)
+    // With subsurface: a profile (diffusion or dipole) instead of the random walk.
+    bool profile_subsurface = false;
 };
 
 class DisneyBxDF final : public BxDF {
@@ -153,7 +166,7 @@ class DisneyBxDF final : public BxDF {
     SampledSpectrum base_color_, sqrt_base_color_, sheen_color_, tinted_f0_, eta_;
     float metallic_weight_, dielectric_weight_, specular_bsdf_weight_, sheen_weight_;
     float roughness_, specular_tint_, clearcoat_, clearcoat_alpha_;
-    bool thin_, subsurface_;
+    bool thin_, subsurface_, profile_subsurface_;
     float diff_trans_, flatness_;
     float lambert_share_;  // of the diffuse lobe's Lambertian part: 1 - diffTrans / 2, 0 with subsurface
     TrowbridgeReitzDistribution specular_, thin_transmission_, clearcoat_masking_;
@@ -161,6 +174,23 @@ class DisneyBxDF final : public BxDF {
     // Which lobes can be non-zero (from the parameters alone; see lobe_present for the sides).
     bool present_[LobeCount] = {};
     bool diffuse_present_ = false, sheen_present_ = false;
+};
+
+// Where light that entered a profile-subsurface solid leaves it (DisneyBxDF above): the
+// mirror image of the crossing, (1 - F_L / 2) / pi for wo inside (below the normal; the light
+// arrives through the interior, so the caller puts wo there) and wi outside. It is eq. 4's Lambertian part without its base colour, its view factor
+// and its blend weight w, which the profile and the entry carry, so that a vanishing scatter
+// distance reproduces eq. 4 exactly. Its albedo is 41/42 (what the diffuse BRDF loses too); it is
+// deliberately not renormalised to 1 as pbrt-v3's Sw is, which would reflect 42/41 of the BRDF.
+// Sampled by the cosine density.
+class DisneySubsurfaceExitBxDF final : public BxDF {
+  public:
+    SampledSpectrum f(Vec3f wo, Vec3f wi, TransportMode mode) const override;
+    std::optional<BSDFSample> sample_f(Vec3f wo, float uc, Vec2f u, TransportMode mode,
+                                       SampleFlags flags = SampleFlags::All) const override;
+    float pdf(Vec3f wo, Vec3f wi, TransportMode mode,
+              SampleFlags flags = SampleFlags::All) const override;
+    BxDFFlags flags() const override { return BxDFDiffuseTransmission; }
 };
 
 } // namespace caustica

@@ -3,12 +3,16 @@
 #include "geometry/interaction.h"
 #include "materials/dielectric_material.h"
 #include "materials/random_walk_albedo.h"
+#include "materials/subsurface_coefficients.h"
 #include "media/homogeneous_medium.h"
 #include "params/constant_textures.h"
 #include "params/parameters.h"
 #include "spectral/cie.h"
+#include "spectral/color_space.h"
 #include "spectral/ior.h"
+#include "spectral/rgb_spectrum.h"
 
+#include <cmath>
 #include <sstream>
 
 namespace caustica {
@@ -89,7 +93,66 @@ class RandomWalkCoefficient final : public Spectrum {
     float max_ = 0;
 };
 
+// Profile models: the smallest scatter distance of a channel, as a fraction of the largest. A
+// channel with d = 0 would hold its energy at the entry point, where no probe ray can find it
+// (normalized_diffusion.h); at a thousandth of the widest channel's spread it is the BRDF limit
+// at every scale where the others matter, and probes still reach it.
+constexpr float MinScatterDistanceFraction = 1e-3f;
+
 } // namespace
+
+float dipole_diffuse_reflectance(float reduced_albedo, float eta) {
+    double fdr = diffuse_fresnel_reflectance(eta);
+    double boundary = (1 + fdr) / (1 - fdr);
+    double a = clamp(reduced_albedo, 0.f, 1.f), s = std::sqrt(3 * (1 - a));
+    return float(a / 2 * (1 + std::exp(-4.0 / 3 * boundary * s)) * std::exp(-s));
+}
+
+namespace {
+
+// The absorbing fraction 1 - alpha' = sigma_a / sigma_t' of the dipole with total diffuse
+// reflectance `reflectance` in (0, 1), computed without forming alpha' (near white it is far
+// below a float's resolution at 1).
+double dipole_absorption_fraction(double reflectance, float eta) {
+    // In x = sqrt(3 (1 - alpha')) the reflectance alpha' / 2 (1 + e^{-k x}) e^{-x}, k = 4 A / 3,
+    // falls smoothly from 1 at x = 0 to 0 at x = sqrt(3) (alpha' = 0), while in alpha' itself it
+    // has a square-root cusp at 1. Newton's method in x, kept inside a shrinking bracket.
+    double fdr = diffuse_fresnel_reflectance(eta);
+    double k = 4.0 / 3 * (1 + fdr) / (1 - fdr);
+    double lo = 0, hi = std::sqrt(3.0), x = 0.5 * hi;
+    for (int iteration = 0; iteration < 100 && hi - lo > 1e-15; ++iteration) {
+        double a = 1 - x * x / 3, e = std::exp(-k * x), ex = std::exp(-x);
+        double value = a / 2 * (1 + e) * ex - reflectance;
+        if (std::abs(value) <= 1e-12 * reflectance) break;
+        (value > 0 ? lo : hi) = x;
+        double slope = ex / 2 * (-2 * x / 3 * (1 + e) - a * k * e - a * (1 + e));
+        double next = x - value / slope;
+        x = next > lo && next < hi ? next : 0.5 * (lo + hi);
+    }
+    return x * x / 3;
+}
+
+} // namespace
+
+float dipole_reduced_albedo(float reflectance, float eta) {
+    float target = clamp(reflectance, 0.f, 1.f);
+    if (target == 0 || target == 1) return target;
+    return float(1 - dipole_absorption_fraction(target, eta));
+}
+
+DipoleCoefficients dipole_coefficients(const SampledSpectrum &albedo, const SampledSpectrum &scatter_distance,
+                                       float eta) {
+    DipoleCoefficients c;
+    for (int i = 0; i < NumWavelengths; ++i) {
+        float A = clamp(albedo[i], 0.f, 1.f), d = scatter_distance[i];
+        if (!(d > 0) || A == 0) continue; // no scattering: the dipole reflects nothing
+        double sigma_t = 1 / (double(d) * christensen_burley_scaling(A));
+        double absorbing = A == 1 ? 0 : dipole_absorption_fraction(A, eta);
+        c.sigma_s_reduced[i] = float((1 - absorbing) * sigma_t);
+        c.sigma_a[i] = float(absorbing * sigma_t);
+    }
+    return c;
+}
 
 MediumPtr create_random_walk_medium(SpectrumPtr albedo, SpectrumPtr scatter_distance, SpectrumPtr interior_sigma_a) {
     auto sigma_s = std::make_shared<RandomWalkCoefficient>(albedo, scatter_distance, nullptr,
@@ -100,9 +163,12 @@ MediumPtr create_random_walk_medium(SpectrumPtr albedo, SpectrumPtr scatter_dist
 }
 
 DisneyMaterial::DisneyMaterial(DisneyTextures textures, SpectrumPtr eta, bool thin, SpectrumPtr sigma_a,
-                               MediumPtr subsurface)
+                               DisneySubsurface subsurface)
     : textures_(std::move(textures)), eta_(std::move(eta)), reference_eta_((*eta_)(FraunhoferD)),
-      thin_(thin), sigma_a_(thin ? nullptr : std::move(sigma_a)), subsurface_(thin ? nullptr : std::move(subsurface)) {
+      thin_(thin), sigma_a_(thin ? nullptr : std::move(sigma_a)),
+      subsurface_(thin ? DisneySubsurface() : std::move(subsurface)) {
+    if (subsurface_.scatter_distance)
+        min_scatter_distance_ = MinScatterDistanceFraction * subsurface_.scatter_distance->max_value();
     if (dynamic_cast<const ConstantSpectrumTexture *>(textures_.base_color.get()))
         constant_luminance_ = luminance(*textures_.base_color, TextureEvalContext());
 
@@ -145,7 +211,8 @@ DisneyParameters DisneyMaterial::parameters(const TextureEvalContext &ctx, const
     p.eta = eta_->sample(lambda);
     p.reference_eta = reference_eta_;
     p.thin = thin_;
-    p.subsurface = subsurface_ != nullptr;
+    p.subsurface = subsurface_.enabled;
+    p.profile_subsurface = has_profile_subsurface();
     if (thin_) {
         p.diff_trans = evaluate_clamped(textures_.diff_trans, ctx, 0, 2);
         p.flatness = evaluate_clamped(textures_.flatness, ctx, 0, 1);
@@ -165,6 +232,103 @@ BSDF DisneyMaterial::get_bsdf(const SurfaceInteraction &si, const SampledWavelen
     return BSDF(si.shading.n, si.shading.dpdu, bxdf);
 }
 
+DisneySubsurfaceProfile DisneyMaterial::subsurface_profile(const SurfaceInteraction &si,
+                                                            const SampledWavelengths &lambda) const {
+    if (subsurface_.model == SubsurfaceModel::Dipole && subsurface_.sigma_a)
+        return DipoleProfile(subsurface_.sigma_a->sample(lambda) * subsurface_.scale,
+                             subsurface_.sigma_s_reduced->sample(lambda) * subsurface_.scale, reference_eta_);
+    SampledSpectrum albedo = textures_.base_color->evaluate(TextureEvalContext(si), lambda);
+    SampledSpectrum d = subsurface_.scatter_distance->sample(lambda);
+    for (int i = 0; i < NumWavelengths; ++i) {
+        albedo[i] = clamp(albedo[i], 0.f, 1.f);
+        d[i] = std::max(d[i], min_scatter_distance_);
+    }
+    if (subsurface_.model == SubsurfaceModel::Diffusion) return NormalizedDiffusionProfile(albedo, d);
+    DipoleCoefficients c = dipole_coefficients(albedo, d, reference_eta_);
+    return DipoleProfile(c.sigma_a, c.sigma_s_reduced, reference_eta_);
+}
+
+BSDF DisneyMaterial::subsurface_exit_bsdf(const SurfaceInteraction &si, ScratchBuffer &scratch) const {
+    return BSDF(si.shading.n, si.shading.dpdu, scratch.make<DisneySubsurfaceExitBxDF>());
+}
+
+namespace {
+
+SubsurfaceModel read_subsurface_model(const ParameterDictionary &params) {
+    std::string name = params.get_one_string("subsurface", "randomwalk");
+    if (name == "randomwalk") return SubsurfaceModel::RandomWalk;
+    if (name == "diffusion") return SubsurfaceModel::Diffusion;
+    if (name == "dipole") return SubsurfaceModel::Dipole;
+    throw InputError(params.location("subsurface"),
+                     "unknown subsurface model \"" + name + "\" (randomwalk, diffusion or dipole)");
+}
+
+// A solid's subsurface parameters (docs/disney.md); interior_sigma_a moves into the random walk's
+// volume when there is one.
+DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedTextures &textures,
+                                 const SpectrumTexturePtr &base_color, float reference_eta,
+                                 SpectrumPtr &interior_sigma_a) {
+    DisneySubsurface sub;
+    sub.model = read_subsurface_model(params);
+    sub.location = params.location("subsurface");
+    if (sub.model == SubsurfaceModel::Dipole) {
+        std::string preset = params.get_one_string("preset", "");
+        if (!preset.empty()) {
+            auto measured = find_measured_subsurface_medium(preset);
+            if (!measured) {
+                std::string names;
+                for (const MeasuredSubsurfaceMedium &m : measured_subsurface_media())
+                    names += (names.empty() ? "" : ", ") + std::string(m.name);
+                throw InputError(params.location("preset"), "unknown subsurface preset \"" + preset +
+                                                                "\" (Jensen et al. 2001's media: " + names + ")");
+            }
+            if (params.has("scatterDistance"))
+                throw InputError(params.location("scatterDistance"),
+                                 "give either \"preset\" or \"scatterDistance\" for the dipole, not both");
+            sub.scale = params.get_one_float("scale", 1);
+            if (!(std::isfinite(sub.scale) && sub.scale > 0))
+                throw InputError(params.location("scale"), "\"scale\" must be a positive number");
+            // Reduced scattering with an isotropic phase function, as pbrt does with this table.
+            sub.sigma_a = std::make_shared<RGBUnboundedSpectrum>(RGBColorSpace::srgb(), measured->sigma_a);
+            sub.sigma_s_reduced = std::make_shared<RGBUnboundedSpectrum>(RGBColorSpace::srgb(),
+                                                                         measured->sigma_s_reduced);
+            sub.enabled = true;
+        }
+    }
+    if (!sub.enabled) {
+        SpectrumTexturePtr scatter_distance =
+            params.get_spectrum_texture_or_null("scatterDistance", SpectrumType::Unbounded, textures);
+        if (!scatter_distance) return sub;
+        auto *distance = dynamic_cast<const ConstantSpectrumTexture *>(scatter_distance.get());
+        if (!distance)
+            throw InputError(params.location("scatterDistance"),
+                             std::string("\"scatterDistance\" must be a constant") +
+                                 (sub.model == SubsurfaceModel::RandomWalk ? ": the subsurface volume is one per object" : ""));
+        float lo, hi;
+        spectrum_range(*distance->spectrum(), &lo, &hi);
+        if (!(lo >= 0 && std::isfinite(hi)))
+            throw InputError(params.location("scatterDistance"), "\"scatterDistance\" must be non-negative");
+        if (hi == 0) return sub;  // the diffuse BRDF
+        sub.enabled = true;
+        sub.scatter_distance = distance->spectrum();
+    }
+    if (sub.model == SubsurfaceModel::Dipole && !(reference_eta >= 1))
+        throw InputError(params.location("eta"), "the dipole needs an interior index \"eta\" >= 1 (its boundary "
+                                                 "condition is for light leaving a denser medium)");
+    if (sub.model == SubsurfaceModel::RandomWalk) {
+        auto *albedo = dynamic_cast<const ConstantSpectrumTexture *>(base_color.get());
+        if (!albedo)
+            throw InputError(params.location("baseColor"),
+                             "with random-walk subsurface scattering (\"scatterDistance\" > 0) \"baseColor\" must "
+                             "be a constant: it sets the albedo of the object's one interior volume");
+        sub.medium = create_random_walk_medium(albedo->spectrum(), sub.scatter_distance, interior_sigma_a);
+        interior_sigma_a = nullptr;  // now part of the medium
+    }
+    return sub;
+}
+
+} // namespace
+
 MaterialPtr create_disney_material(const ParameterDictionary &params, const NamedTextures &textures,
                                    SpectrumPtr eta, SpectrumPtr interior_sigma_a) {
     DisneyTextures t;
@@ -183,7 +347,7 @@ MaterialPtr create_disney_material(const ParameterDictionary &params, const Name
     // Burley 2015, section 3.4: solids add scatterDistance, thin surfaces diffTrans and
     // flatness. Parameters of the other kind are left unread, so they are reported as unused.
     bool thin = params.get_one_bool("thin", false);
-    MediumPtr subsurface;
+    DisneySubsurface subsurface;
     if (thin) {
         t.diff_trans = read_float(params, textures, "diffTrans", 0, 0, 2);
         t.flatness = read_float(params, textures, "flatness", 0, 0, 1);
@@ -192,27 +356,7 @@ MaterialPtr create_disney_material(const ParameterDictionary &params, const Name
             warning(params.location(name), std::string("a thin surface has no interior: \"") + name + "\" is ignored");
         }
     } else {
-        SpectrumTexturePtr scatter_distance =
-            params.get_spectrum_texture_or_null("scatterDistance", SpectrumType::Unbounded, textures);
-        if (scatter_distance) {
-            auto *distance = dynamic_cast<const ConstantSpectrumTexture *>(scatter_distance.get());
-            if (!distance)
-                throw InputError(params.location("scatterDistance"),
-                                 "\"scatterDistance\" must be a constant: the subsurface volume is one per object");
-            float lo, hi;
-            spectrum_range(*distance->spectrum(), &lo, &hi);
-            if (!(lo >= 0 && std::isfinite(hi)))
-                throw InputError(params.location("scatterDistance"), "\"scatterDistance\" must be non-negative");
-            if (hi > 0) {
-                auto *albedo = dynamic_cast<const ConstantSpectrumTexture *>(t.base_color.get());
-                if (!albedo)
-                    throw InputError(params.location("baseColor"),
-                                     "with subsurface scattering (\"scatterDistance\" > 0) \"baseColor\" must be a "
-                                     "constant: it sets the albedo of the object's one interior volume");
-                subsurface = create_random_walk_medium(albedo->spectrum(), distance->spectrum(), interior_sigma_a);
-                interior_sigma_a = nullptr;  // now part of the medium
-            }
-        }
+        subsurface = read_subsurface(params, textures, t.base_color, (*eta)(FraunhoferD), interior_sigma_a);
     }
     return std::make_shared<DisneyMaterial>(std::move(t), std::move(eta), thin, std::move(interior_sigma_a),
                                             std::move(subsurface));

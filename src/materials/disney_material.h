@@ -3,20 +3,37 @@
 //
 // Solids may have Beer-Lambert absorption inside ("transmittance" at "atDistance", as the
 // dielectric material), which integrators apply to paths that refracted in. A solid with a
-// non-zero "scatterDistance" has path-traced subsurface scattering (Burley 2015, section 2.5):
-// its interior is a homogeneous medium, isotropic, whose single-scattering albedo makes the
-// surface reflect baseColor (random_walk_albedo.h) and whose mean free path gives the walk the
-// spread of the normalised diffusion profile with d = scatterDistance; the BxDF's Lambertian
-// part becomes the crossing into it (disney_bxdf.h). The interior absorption, if any, adds to the
-// medium's. The volume is one per object, so baseColor and scatterDistance must then be
-// constants (a texture is an error).
+// non-zero "scatterDistance" has subsurface scattering (Burley 2015, sections 2.4 and 2.5), by
+// one of three models ("string subsurface"):
+//   - "randomwalk" (default): path-traced. The interior is a homogeneous medium, isotropic,
+//     whose single-scattering albedo makes the surface reflect baseColor (random_walk_albedo.h)
+//     and whose mean free path gives the walk the spread of the normalised diffusion profile
+//     with d = scatterDistance; the BxDF's Lambertian part becomes the crossing into it
+//     (disney_bxdf.h). The interior absorption, if any, adds to the medium's. The volume is one
+//     per object, so baseColor and scatterDistance must then be constants.
+//   - "diffusion": a separable BSSRDF with Burley's normalised diffusion profile
+//     (normalized_diffusion.h), albedo baseColor at the entry point, d = scatterDistance.
+//   - "dipole": the same with Jensen et al. 2001's dipole (dipole_profile.h), whose coefficients
+//     come either from (baseColor, scatterDistance), chosen so that the dipole reflects
+//     baseColor with the spread of the normalised profile of the same d, or from a measured
+//     medium of Jensen's table ("string preset", in mm^-1, times "float scale").
+// For the two profile models the separable BSSRDF is
+//     S(x_o, w_o; x_i, w_i) = w (1 - F(w_i) / 2) R(|x_o - x_i|) (1 - F(w_o) / 2) / pi,
+// the crossing's entering share, the profile (which integrates to its albedo) and the exit lobe
+// (DisneySubsurfaceExitBxDF); as the scatter distance vanishes it is eq. 4's Lambertian part.
+// The path tracer alone renders it (integrators/pt: it samples the exit point with probe rays).
 #pragma once
 
+#include "core/error.h"
+#include "materials/dipole_profile.h"
 #include "materials/disney_bxdf.h"
 #include "materials/material.h"
+#include "materials/normalized_diffusion.h"
 #include "media/medium.h"
 #include "spectral/spectrum.h"
 #include "textures/texture.h"
+
+#include <variant>
 
 namespace caustica {
 
@@ -30,12 +47,32 @@ struct DisneyTextures {
     FloatTexturePtr diff_trans, flatness;
 };
 
+enum class SubsurfaceModel { RandomWalk, Diffusion, Dipole };
+
+// A solid's subsurface scattering; `enabled` false (the default) for none.
+struct DisneySubsurface {
+    bool enabled = false;
+    SubsurfaceModel model = SubsurfaceModel::RandomWalk;
+    MediumPtr medium;             // random walk: the interior volume
+    SpectrumPtr scatter_distance; // diffusion, and dipole without a preset: d per wavelength
+    // Dipole with a preset: Jensen's coefficients (mm^-1) and the scene units' conversion.
+    SpectrumPtr sigma_a, sigma_s_reduced;
+    float scale = 1;
+    SourceLocation location;      // of "subsurface", for errors about the model
+};
+
+// The profile of a diffusion or dipole solid for light entering at one point.
+using DisneySubsurfaceProfile = std::variant<NormalizedDiffusionProfile, DipoleProfile>;
+inline const SubsurfaceProfile &as_profile(const DisneySubsurfaceProfile &profile) {
+    return std::visit([](const auto &p) -> const SubsurfaceProfile & { return p; }, profile);
+}
+
 class DisneyMaterial final : public Material {
   public:
     // eta: index of the inside relative to the outside (a constant or a dispersion curve).
     // sigma_a: interior absorption per unit length, or null (always null for thin surfaces).
-    // subsurface: the random-walk interior medium, or null (no subsurface scattering).
-    DisneyMaterial(DisneyTextures textures, SpectrumPtr eta, bool thin, SpectrumPtr sigma_a, MediumPtr subsurface);
+    DisneyMaterial(DisneyTextures textures, SpectrumPtr eta, bool thin, SpectrumPtr sigma_a,
+                   DisneySubsurface subsurface);
 
     BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                   ScratchBuffer &scratch) const override;
@@ -45,8 +82,20 @@ class DisneyMaterial final : public Material {
         return sigma_a_ ? sigma_a_->sample(lambda) : SampledSpectrum();
     }
     bool has_interior_absorption() const override { return sigma_a_ != nullptr; }
-    bool has_subsurface() const override { return subsurface_ != nullptr; }
-    const Medium *interior_medium() const override { return subsurface_.get(); }
+    bool has_subsurface() const override { return subsurface_.enabled; }
+    const Medium *interior_medium() const override { return subsurface_.medium.get(); }
+
+    SubsurfaceModel subsurface_model() const { return subsurface_.model; }
+    // Subsurface scattering by a profile (diffusion or dipole): only the path tracer renders it.
+    bool has_profile_subsurface() const override {
+        return subsurface_.enabled && subsurface_.model != SubsurfaceModel::RandomWalk;
+    }
+    // Where the scene chose the model (the "subsurface" parameter, or the directive).
+    const SourceLocation &subsurface_location() const { return subsurface_.location; }
+    // For profile subsurface: the profile of light entering at si, and the BSDF of its exit lobe
+    // at a point where it leaves (wo must point inside there).
+    DisneySubsurfaceProfile subsurface_profile(const SurfaceInteraction &si, const SampledWavelengths &lambda) const;
+    BSDF subsurface_exit_bsdf(const SurfaceInteraction &si, ScratchBuffer &scratch) const;
 
     bool is_thin() const { return thin_; }
     // The BxDF's inputs at a point: textures evaluated and clamped to their ranges.
@@ -58,12 +107,28 @@ class DisneyMaterial final : public Material {
     float reference_eta_;
     bool thin_;
     SpectrumPtr sigma_a_;
-    MediumPtr subsurface_;
+    DisneySubsurface subsurface_;
+    // Profile models: no channel's scatter distance goes below this (see subsurface_profile).
+    float min_scatter_distance_ = 0;
     // The base colour's luminance when the base colour is a constant (else negative: computed
     // per point, and only when a tint needs it).
     float constant_luminance_ = -1;
     bool dispersive_ = false, specular_ = false;
 };
+
+// The coefficients of Jensen's dipole that reflects `albedo` (its total diffuse reflectance R_d is
+// the albedo) with the mean free path of the normalised diffusion profile of scatter distance d,
+// 1 / sigma_t' = d s(A) (Christensen and Burley's diffuse-transmission fit, as for the random
+// walk), for a boundary of relative index eta >= 1. Per wavelength.
+struct DipoleCoefficients {
+    SampledSpectrum sigma_a, sigma_s_reduced;
+};
+DipoleCoefficients dipole_coefficients(const SampledSpectrum &albedo, const SampledSpectrum &scatter_distance,
+                                       float eta);
+// Jensen et al. 2001's total diffuse reflectance of the dipole for reduced albedo alpha' and
+// relative index eta, and its inverse (alpha' for a reflectance in [0, 1]).
+float dipole_diffuse_reflectance(float reduced_albedo, float eta);
+float dipole_reduced_albedo(float reflectance, float eta);
 
 // The random-walk interior for baseColor `albedo` and `scatter_distance` (both reflectances /
 // lengths per wavelength), with the solid's Beer-Lambert absorption (or null) added.

@@ -24,6 +24,8 @@ class Material {
     // Does any of its lobes scatter diffusely or glossily (so it can receive a caustic)?
     virtual bool has_non_specular_lobe() const { return true; }
     virtual bool has_subsurface() const { return false; }
+    // Subsurface scattering by a diffusion profile (a BSSRDF), which only the path tracer samples.
+    virtual bool has_profile_subsurface() const { return false; }
     // Beer-Lambert absorption coefficient (per unit length) of the material's interior, for
     // dielectrics given sigma_a or a transmittance colour at a distance. Integrators track when a
     // path is inside and attenuate by exp(-sigma_a * distance). Zero when the interior is clear.

@@ -32,6 +32,7 @@ struct SceneFeatures {
     bool media = false;
     bool medium_boundaries = false;      // shapes without a material, which rays pass through
     bool subsurface = false;
+    bool profile_subsurface = false;     // a diffusion-profile BSSRDF, which only pt samples
     bool visible_emitters = false;       // area or infinite lights the camera can see
     bool absorbing_interiors = false;
     bool all_spectra_constant = false;

@@ -10,10 +10,13 @@
 #include "materials/disney_bxdf.h"
 #include "materials/disney_material.h"
 #include "materials/random_walk_albedo.h"
+#include "materials/subsurface_coefficients.h"
 #include "materials/fresnel.h"
 #include "materials/material_factory.h"
 #include "spectral/cie.h"
+#include "spectral/color_space.h"
 #include "spectral/ior.h"
+#include "spectral/rgb_spectrum.h"
 #include "textures/texture_factory.h"
 
 #include <gtest/gtest.h>
@@ -553,6 +556,77 @@ TEST(DisneyBxDF, SubsurfaceBoundaryConservesEnergy) {
     }
 }
 
+TEST(DisneyBxDF, ProfileEntryIsADiscreteEvent) {
+    // With a profile (diffusion, dipole), light from outside enters through a discrete event
+    // that carries w (1 - F_V / 2) and has no direction: f and pdf have nothing below the surface
+    // from outside, and sample_f returns the entry with weight f |cos| / pdf = share / P(entry).
+    // Over stratified lobe choices uc the entry is chosen for a fraction P(entry) of them (to
+    // within 1 / N), so the mean weight is the share to within 1 / (N P(entry)) < 1e-3. Every
+    // other sample is an ordinary one: its value and density are f and pdf. From inside, the
+    // lobes are the random walk's.
+    for (float metallic : {0.f, 0.3f}) {
+        DisneyParameters p = coloured();
+        p.metallic = metallic, p.roughness = 0.6f, p.sheen = 0.5f, p.clearcoat = 0.5f, p.subsurface = true;
+        DisneyParameters walk = p;
+        p.profile_subsurface = true;
+        DisneyBxDF b(p), random_walk(walk);
+        const float w = 1 - metallic;
+        for (float theta : {0.f, 45.f, 80.f}) {
+            Vec3f wo = direction_at(theta);
+            for (float below : {100.f, 150.f}) {
+                Vec3f wi = direction_at(below, 70);
+                EXPECT_TRUE(b.f(wo, wi, TransportMode::Radiance).is_black());
+                EXPECT_EQ(b.pdf(wo, wi, TransportMode::Radiance), 0);
+            }
+            const int n = 20000;
+            double entering = 0;
+            for (int i = 0; i < n; ++i) {
+                auto s = b.sample_f(wo, (i + 0.5f) / n, {0.3f, 0.6f}, TransportMode::Radiance);
+                if (!s) continue;
+                if (s->wi.z < 0) {
+                    EXPECT_EQ(s->flags, BxDFDiffuseTransmission);
+                    EXPECT_EQ(s->wi.z, -1);
+                    entering += s->f[0] * std::abs(s->wi.z) / s->pdf / n;
+                } else if (!is_specular(s->flags)) {
+                    expect_relative(s->f[1], b.f(wo, s->wi, TransportMode::Radiance)[1], 1e-5f, "sampled f");
+                    expect_relative(s->pdf, b.pdf(wo, s->wi, TransportMode::Radiance), 1e-5f, "sampled pdf");
+                }
+            }
+            double fv = std::pow(1 - std::cos(radians(theta)), 5);
+            EXPECT_NEAR(entering, w * (1 - fv / 2), 1e-3) << "theta " << theta << " metallic " << metallic;
+            // Reflection is the random walk's (neither has a Lambertian part above the surface).
+            Vec3f wr = direction_at(35, 200);
+            expect_relative(b.f(wo, wr, TransportMode::Radiance)[2], random_walk.f(wo, wr, TransportMode::Radiance)[2],
+                            1e-6f, "reflection");
+        }
+        Vec3f inside = direction_at(130), out = direction_at(20, 100), back = direction_at(160, 250);
+        for (Vec3f wi : {out, back}) {
+            EXPECT_EQ(b.f(inside, wi, TransportMode::Radiance)[0], random_walk.f(inside, wi, TransportMode::Radiance)[0]);
+            EXPECT_EQ(b.pdf(inside, wi, TransportMode::Radiance), random_walk.pdf(inside, wi, TransportMode::Radiance));
+        }
+    }
+}
+
+TEST(DisneyBxDF, SubsurfaceExitLobe) {
+    // (1 - F_L / 2) / pi from inside to outside: albedo 1 - 1/42 (the integral of (1 - mu)^5 mu
+    // over [0, 1] is B(2, 6) = 1/42), by quadrature; samples weigh exactly 1 - F_L / 2.
+    DisneySubsurfaceExitBxDF exit;
+    Vec3f wo = direction_at(170);
+    double albedo = integrate_hemisphere(
+        [&](Vec3f wi) { return double(exit.f(wo, wi, TransportMode::Radiance)[0]) * wi.z; });
+    EXPECT_NEAR(albedo, 41.0 / 42, 1e-4);
+    EXPECT_TRUE(exit.f(direction_at(10), direction_at(40), TransportMode::Radiance).is_black());
+    EXPECT_TRUE(exit.f(wo, direction_at(120), TransportMode::Radiance).is_black());
+    Rng rng(3, 1);
+    for (int i = 0; i < 100; ++i) {
+        auto s = exit.sample_f(wo, 0, rng.uniform2(), TransportMode::Radiance);
+        ASSERT_TRUE(s);
+        ASSERT_GT(s->wi.z, 0);
+        EXPECT_NEAR(s->f[0] * s->wi.z / s->pdf, 1 - std::pow(1 - s->wi.z, 5) / 2, 1e-5);
+        EXPECT_NEAR(s->pdf, exit.pdf(wo, s->wi, TransportMode::Radiance), 1e-6);
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Lobe values.
 
@@ -997,6 +1071,109 @@ TEST_F(DisneyMaterialTest, InteriorAbsorptionAndScatterDistance) {
     EXPECT_FALSE(dict_->parameters()[1].looked_up);
 }
 
+// Jensen et al. 2001's total diffuse reflectance, written out here from the paper (section 2.4,
+// with the diffuse Fresnel reflectance of Egan and Hilgeman's fit they use).
+double jensen_reflectance(double sigma_a, double sigma_s_reduced, double eta) {
+    double fdr = -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta;
+    double A = (1 + fdr) / (1 - fdr);
+    double albedo = sigma_s_reduced / (sigma_a + sigma_s_reduced);
+    double s = std::sqrt(3 * (1 - albedo));
+    return albedo / 2 * (1 + std::exp(-4.0 / 3 * A * s)) * std::exp(-s);
+}
+
+TEST_F(DisneyMaterialTest, SubsurfaceModels) {
+    // The default is the random walk.
+    auto walk = create({numbers("spectrum", "scatterDistance", {0.5}, 2)});
+    EXPECT_EQ(walk->subsurface_model(), SubsurfaceModel::RandomWalk);
+    EXPECT_TRUE(walk->interior_medium());
+    EXPECT_FALSE(walk->has_profile_subsurface());
+    EXPECT_FALSE(at(*walk).profile_subsurface);
+
+    // Diffusion: no volume, Beer-Lambert absorption kept for refracted paths, a textured base
+    // colour allowed, and a profile whose albedo is the base colour at the entry point and whose
+    // spread is the scatter distance.
+    ParameterDictionary checks = dictionary({numbers("float", "uscale", {2}, 2), numbers("spectrum", "tex1", {0.3}, 3),
+                                             numbers("spectrum", "tex2", {0.7}, 4)});
+    textures_.albedo["tint"] =
+        create_spectrum_texture("checkerboard", {}, checks, SpectrumType::Albedo, textures_, directive_location());
+    auto diffusion = create({strings("string", "subsurface", {"diffusion"}, 2),
+                             numbers("spectrum", "scatterDistance", {0.2}, 3), strings("texture", "baseColor", {"tint"}, 4),
+                             numbers("spectrum", "transmittance", {0.5}, 5)});
+    EXPECT_EQ(diffusion->subsurface_model(), SubsurfaceModel::Diffusion);
+    EXPECT_TRUE(diffusion->has_subsurface());
+    EXPECT_TRUE(diffusion->has_profile_subsurface());
+    EXPECT_FALSE(diffusion->interior_medium());
+    EXPECT_TRUE(diffusion->has_interior_absorption());
+    EXPECT_EQ(diffusion->subsurface_location().line, 2);
+    DisneyParameters p = at(*diffusion);
+    EXPECT_TRUE(p.subsurface);
+    EXPECT_TRUE(p.profile_subsurface);
+    DisneySubsurfaceProfile profile = diffusion->subsurface_profile(surface_at(0.25f, 0.25f), lambda_);
+    DisneySubsurfaceProfile other = diffusion->subsurface_profile(surface_at(0.75f, 0.25f), lambda_);
+    ASSERT_TRUE(std::holds_alternative<NormalizedDiffusionProfile>(profile));
+    NormalizedDiffusionProfile expected(SampledSpectrum(0.3f), SampledSpectrum(0.2f));
+    for (int i = 0; i < NumWavelengths; ++i) {
+        EXPECT_FLOAT_EQ(as_profile(profile).albedo()[i], 0.3f);
+        EXPECT_FLOAT_EQ(as_profile(other).albedo()[i], 0.7f);
+        EXPECT_FLOAT_EQ(as_profile(profile).max_radius(i), expected.max_radius(i));
+    }
+
+    // A channel with scatter distance 0 is held at a thousandth of the largest: the BRDF limit
+    // at the scale of the others, but within the probes' reach.
+    auto partly = create({strings("string", "subsurface", {"diffusion"}, 2),
+                          numbers("spectrum", "scatterDistance", {360, 0, 550, 0, 560, 0.1, 830, 0.1}, 3)});
+    SampledWavelengths lambda = SampledWavelengths::sample_uniform(0.1f);
+    DisneySubsurfaceProfile partial = partly->subsurface_profile(surface_at(0.5f, 0.5f), lambda);
+    NormalizedDiffusionProfile floor(SampledSpectrum(0.5f), SampledSpectrum(1e-4f));
+    for (int i = 0; i < NumWavelengths; ++i)
+        if (lambda[i] < 550) {
+            EXPECT_FLOAT_EQ(as_profile(partial).max_radius(i), floor.max_radius(0)) << lambda[i];
+        }
+
+    // Dipole from (baseColor, scatterDistance): it reflects the base colour (Jensen's R_d of
+    // its coefficients), and its mean free path is d s(A) (s(0.6) = 1.34).
+    auto dipole = create({strings("string", "subsurface", {"dipole"}, 2), numbers("spectrum", "scatterDistance", {0.2}, 3),
+                          numbers("spectrum", "baseColor", {0.6}, 4), numbers("float", "eta", {1.4}, 5)});
+    EXPECT_FALSE(dipole->interior_medium());
+    DisneySubsurfaceProfile mapped = dipole->subsurface_profile(surface_at(0.5f, 0.5f), lambda_);
+    ASSERT_TRUE(std::holds_alternative<DipoleProfile>(mapped));
+    EXPECT_NEAR(as_profile(mapped).albedo()[0], 0.6f, 1e-4f);
+    DipoleCoefficients c = dipole_coefficients(SampledSpectrum(0.6f), SampledSpectrum(0.2f), 1.4f);
+    EXPECT_NEAR(1 / (c.sigma_a[0] + c.sigma_s_reduced[0]), 0.2 * (1.9 - 0.6 + 3.5 * 0.04), 1e-5);
+    EXPECT_NEAR(jensen_reflectance(c.sigma_a[0], c.sigma_s_reduced[0], 1.4), 0.6, 1e-4);
+    // (alpha' as a float: near 1 its rounding moves R_d by up to ~1e-5.)
+    for (float r : {0.f, 0.05f, 0.3f, 0.9f, 0.99f, 1.f})
+        EXPECT_NEAR(dipole_diffuse_reflectance(dipole_reduced_albedo(r, 1.3f), 1.3f), r, 1e-4f) << r;
+    // Near white the absorption is a tiny fraction of the extinction, which the coefficients keep
+    // to full precision (1 - alpha' is below a float's resolution at 1 here).
+    DipoleCoefficients white = dipole_coefficients(SampledSpectrum(0.9999f), SampledSpectrum(0.2f), 1.3f);
+    EXPECT_NEAR(jensen_reflectance(white.sigma_a[0], white.sigma_s_reduced[0], 1.3), 0.9999, 1e-6);
+
+    // Dipole from a preset: Jensen's coefficients in mm^-1 times "scale" (scene units per mm):
+    // the albedo is Jensen's R_d whatever the scale, which only shrinks the spread.
+    auto skin = create({strings("string", "subsurface", {"dipole"}, 2), strings("string", "preset", {"Skin1"}, 3),
+                        numbers("float", "eta", {1.3}, 4)});
+    auto small_skin = create({strings("string", "subsurface", {"dipole"}, 2), strings("string", "preset", {"skin1"}, 3),
+                              numbers("float", "eta", {1.3}, 4), numbers("float", "scale", {10}, 5)});
+    EXPECT_TRUE(skin->has_profile_subsurface());
+    auto measured = find_measured_subsurface_medium("skin1");
+    ASSERT_TRUE(measured);
+    RGBUnboundedSpectrum sigma_a(RGBColorSpace::srgb(), measured->sigma_a);
+    RGBUnboundedSpectrum sigma_s(RGBColorSpace::srgb(), measured->sigma_s_reduced);
+    DisneySubsurfaceProfile big = skin->subsurface_profile(surface_at(0.5f, 0.5f), lambda_);
+    DisneySubsurfaceProfile small = small_skin->subsurface_profile(surface_at(0.5f, 0.5f), lambda_);
+    for (int i = 0; i < NumWavelengths; ++i) {
+        double rd = jensen_reflectance(sigma_a(lambda_[i]), sigma_s(lambda_[i]), 1.3);
+        EXPECT_NEAR(as_profile(big).albedo()[i], rd, 1e-5);
+        EXPECT_NEAR(as_profile(small).albedo()[i], rd, 1e-5);
+        EXPECT_NEAR(as_profile(small).max_radius(i), as_profile(big).max_radius(i) / 10, 1e-4 * as_profile(big).max_radius(i));
+    }
+
+    // A thin surface reads none of it.
+    create({boolean("thin", true, 2), strings("string", "subsurface", {"diffusion"}, 3)});
+    EXPECT_FALSE(dict_->parameters()[1].looked_up);
+}
+
 TEST_F(DisneyMaterialTest, ErrorsPointAtTheParameter) {
     EXPECT_EQ(error_line({numbers("float", "metallic", {1.5}, 3)}), 3);
     EXPECT_EQ(error_line({numbers("float", "roughness", {-0.1}, 4)}), 4);
@@ -1008,6 +1185,26 @@ TEST_F(DisneyMaterialTest, ErrorsPointAtTheParameter) {
     EXPECT_EQ(error_line({numbers("float", "eta", {0}, 10)}), 10);
     EXPECT_EQ(error_line({numbers("spectrum", "scatterDistance", {-1}, 11)}), 11);
     EXPECT_EQ(error_line({numbers("spectrum", "transmittance", {0.5}, 2), numbers("float", "atDistance", {0}, 12)}), 12);
+    EXPECT_EQ(error_line({strings("string", "subsurface", {"bssrdf"}, 13)}), 13);
+    EXPECT_EQ(error_line({strings("string", "subsurface", {"dipole"}, 2), strings("string", "preset", {"jade"}, 14)}), 14);
+    EXPECT_EQ(error_line({strings("string", "subsurface", {"dipole"}, 2), strings("string", "preset", {"apple"}, 3),
+                          numbers("spectrum", "scatterDistance", {0.1}, 15)}),
+              15);
+    EXPECT_EQ(error_line({strings("string", "subsurface", {"dipole"}, 2), strings("string", "preset", {"apple"}, 3),
+                          numbers("float", "scale", {0}, 16)}),
+              16);
+    EXPECT_EQ(error_line({strings("string", "subsurface", {"dipole"}, 2), numbers("spectrum", "scatterDistance", {0.1}, 3),
+                          numbers("float", "eta", {0.8}, 17)}),
+              17);
+    // Only the random walk's one volume needs a constant base colour.
+    ParameterDictionary checks = dictionary({numbers("spectrum", "tex1", {0.2}, 2), numbers("spectrum", "tex2", {0.6}, 3)});
+    textures_.albedo["tint"] =
+        create_spectrum_texture("checkerboard", {}, checks, SpectrumType::Albedo, textures_, directive_location());
+    EXPECT_EQ(error_line({numbers("spectrum", "scatterDistance", {0.1}, 3), strings("texture", "baseColor", {"tint"}, 18)}),
+              18);
+    EXPECT_EQ(error_line({strings("string", "subsurface", {"dipole"}, 2), numbers("spectrum", "scatterDistance", {0.1}, 3),
+                          strings("texture", "baseColor", {"tint"}, 4)}),
+              -1);
     EXPECT_EQ(error_line({numbers("float", "sheen", {4}, 2), numbers("float", "clearcoat", {1}, 3),
                           boolean("thin", true, 4), numbers("float", "diffTrans", {2}, 5)}),
               -1);
