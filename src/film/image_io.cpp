@@ -1,5 +1,7 @@
 #include "film/image_io.h"
 
+#include "openimageio/openimageio_plugin.h"
+
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -7,7 +9,6 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <Imath/half.h>
-#include <OpenImageIO/imageio.h>
 
 #include <cerrno>
 #include <cmath>
@@ -162,13 +163,8 @@ void write_png(const std::string &path, const Image &image) {
     std::vector<uint8_t> pixels(image.rgb.size());
     for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = tone_map_clamp_srgb8(image.rgb[i]);
     write_atomically(path, [&](const std::string &tmp) {
-        auto out = OIIO::ImageOutput::create(tmp);
-        if (!out) throw std::runtime_error(OIIO::geterror());
-        OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-        spec.attribute("oiio:ColorSpace", "sRGB");
-        if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) ||
-            !out->close())
-            throw std::runtime_error(out->geterror());
+        std::string why = openimageio().write_rgb8(tmp, image.width, image.height, pixels.data());
+        if (!why.empty()) throw std::runtime_error(why);
     });
 }
 

@@ -21,7 +21,7 @@ void write_exr(const std::string &path, const Image &image,
                const std::map<std::string, std::string> &metadata,
                ExrPixelType pixel_type = ExrPixelType::Float);
 
-// 8-bit sRGB PNG through OpenImageIO, tone mapped with tone_map_clamp_srgb8().
+// 8-bit sRGB PNG through the OpenImageIO plugin, tone mapped with tone_map_clamp_srgb8().
 void write_png(const std::string &path, const Image &image);
 
 // The R, G, B channels of an OpenEXR file as floats (a luminance-only "Y" file is read as

@@ -234,7 +234,7 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
         // vertices, so it lies on the triangle up to rounding.
         float u = rayhit.hit.u, v = rayhit.hit.v;
         float b[3] = {std::max(0.f, 1 - u - v), u, v};
-        *si = group.mesh->interaction(int(index), b, -normalize(local.d));
+        group.mesh->interaction(int(index), b, si);
     } else {
         *si = group.analytic->interaction(local, t);
     }

@@ -54,6 +54,8 @@ TriangleMesh::TriangleMesh(const Transform &render_from_object, bool reverse_ori
     if (dropped > 0)
         warning(loc, what + ": dropped " + std::to_string(dropped) + " of " +
                          std::to_string(indices.size() / 3) + " triangles with zero area");
+    frames_.resize(triangle_count());
+    for (int t = 0; t < triangle_count(); ++t) frames_[t] = compute_frame(t);
 }
 
 float TriangleMesh::area(int triangle) const {
@@ -85,9 +87,7 @@ Vec3f TriangleMesh::oriented_normal(Vec3f ng, Vec3f n_interpolated) const {
 }
 
 Vec3f TriangleMesh::normal(int triangle, const float b[3]) const {
-    auto v = vertices(triangle);
-    Vec3f p0 = p_[v[0]], p1 = p_[v[1]], p2 = p_[v[2]];
-    return oriented_normal(normalize(cross(p0 - p2, p1 - p2)), interpolated_normal(triangle, b));
+    return oriented_normal(frames_[triangle].n_winding, interpolated_normal(triangle, b));
 }
 
 void TriangleMesh::triangle_uvs(int triangle, Vec2f uv[3]) const {
@@ -108,53 +108,60 @@ Vec2f TriangleMesh::uv(int triangle, const float b[3]) const {
     return t[0] * b[0] + t[1] * b[1] + t[2] * b[2];
 }
 
-SurfaceInteraction TriangleMesh::interaction(int triangle, const float b[3], Vec3f wo) const {
+TriangleMesh::TriangleFrame TriangleMesh::compute_frame(int triangle) const {
     auto v = vertices(triangle);
     Vec3f p0 = p_[v[0]], p1 = p_[v[1]], p2 = p_[v[2]];
     Vec2f t[3];
     triangle_uvs(triangle, t);
-
-    SurfaceInteraction si;
-    si.p = point(triangle, b);
-    si.uv = t[0] * b[0] + t[1] * b[1] + t[2] * b[2];
-    si.wo = wo;
-    si.face_index = triangle;
+    TriangleFrame frame;
+    frame.n_winding = normalize(cross(p0 - p2, p1 - p2));
 
     // Partial derivatives from the linear map between uv and position over the triangle:
     // dp02 = duv02.u dpdu + duv02.v dpdv, dp12 = duv12.u dpdu + duv12.v dpdv.
     Vec2f duv02 = t[0] - t[2], duv12 = t[1] - t[2];
     Vec3f dp02 = p0 - p2, dp12 = p1 - p2;
     double determinant = double(duv02.x) * duv12.y - double(duv02.y) * duv12.x;
-    Vec3f ng = normalize(cross(dp02, dp12));
     bool degenerate_uv = std::abs(determinant) < 1e-9;
     if (!degenerate_uv) {
         float inv = float(1 / determinant);
-        si.dpdu = (dp02 * duv12.y - dp12 * duv02.y) * inv;
-        si.dpdv = (dp12 * duv02.x - dp02 * duv12.x) * inv;
+        frame.dpdu = (dp02 * duv12.y - dp12 * duv02.y) * inv;
+        frame.dpdv = (dp12 * duv02.x - dp02 * duv12.x) * inv;
     }
-    if (degenerate_uv || length_squared(cross(si.dpdu, si.dpdv)) == 0 || !is_finite(si.dpdu) ||
-        !is_finite(si.dpdv))
-        coordinate_system(-ng, &si.dpdu, &si.dpdv); // pbrt-v4's choice of axis, for parity
+    if (degenerate_uv || length_squared(cross(frame.dpdu, frame.dpdv)) == 0 ||
+        !is_finite(frame.dpdu) || !is_finite(frame.dpdv))
+        coordinate_system(-frame.n_winding, &frame.dpdu, &frame.dpdv); // pbrt-v4's axis choice
+    return frame;
+}
 
+void TriangleMesh::interaction(int triangle, const float b[3], SurfaceInteraction *si) const {
+    auto v = vertices(triangle);
+    Vec2f t[3];
+    triangle_uvs(triangle, t);
+    const TriangleFrame &frame = frames_[triangle];
+
+    si->p = p_[v[0]] * b[0] + p_[v[1]] * b[1] + p_[v[2]] * b[2];
+    si->uv = t[0] * b[0] + t[1] * b[1] + t[2] * b[2];
+    si->face_index = triangle;
+    si->dpdu = frame.dpdu;
+    si->dpdv = frame.dpdv;
     Vec3f n_interpolated = interpolated_normal(triangle, b);
-    si.n = oriented_normal(ng, n_interpolated);
-    si.shading.n = si.n;
-    si.shading.dpdu = si.dpdu;
-    si.shading.dpdv = si.dpdv;
-    if (n_.empty()) return si;
+    si->n = oriented_normal(frame.n_winding, n_interpolated);
+    si->shading.n = si->n;
+    si->shading.dpdu = si->dpdu;
+    si->shading.dpdv = si->dpdv;
+    if (n_.empty()) return;
 
     // Shading frame: interpolated normal (the geometric one where it vanishes), tangent along
     // dpdu made orthogonal to it.
-    Vec3f ns = length_squared(n_interpolated) > 0 ? normalize(n_interpolated) : si.n;
-    Vec3f ss = si.dpdu;
+    Vec3f ns = length_squared(n_interpolated) > 0 ? normalize(n_interpolated) : si->n;
+    Vec3f ss = si->dpdu;
     Vec3f ts = cross(ns, ss);
     if (length_squared(ts) > 0) {
         ss = cross(ts, ns);
     } else {
         coordinate_system(ns, &ss, &ts);
     }
-    si.set_shading(ns, ss, ts);
-    return si;
+    si->set_shading(ns, ss, ts);
 }
 
 } // namespace caustica

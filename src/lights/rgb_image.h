@@ -14,7 +14,7 @@ struct RGBImage {
     float *at(int x, int y) { return &pixels[3 * (size_t(y) * width + x)]; }
 };
 
-// Reads R, G and B with OpenImageIO as linear floats: integer-coded files (PNG, JPEG, ...) are
+// Reads R, G and B through the OpenImageIO plugin as linear floats: integer-coded files (PNG, JPEG, ...) are
 // decoded from sRGB unless they declare themselves linear, as pbrt-v4 does. Throws
 // std::runtime_error with a reason (unreadable file, no R/G/B channels, NaN or infinite values).
 RGBImage read_rgb_image(const std::string &filename);
