@@ -89,13 +89,22 @@ void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWave
     int y0 = std::max(pixel_bounds_.min.y, int(std::floor(discrete.y - r.y)));
     int x1 = std::min(pixel_bounds_.max.x, int(std::floor(discrete.x + r.x)) + 1);
     int y1 = std::min(pixel_bounds_.max.y, int(std::floor(discrete.y + r.y)) + 1);
-    for (int y = y0; y < y1; ++y)
+    if (x0 >= x1 || y0 >= y1) return;
+    // The filter is separable: one weight per column and one per row (at most 2 r + 2 each).
+    constexpr int MaxFootprint = 2 * int(MaxFilterRadius) + 2;
+    float weight_x[MaxFootprint], weight_y[MaxFootprint];
+    for (int x = x0; x < x1; ++x) weight_x[x - x0] = filter_->evaluate_x(p_raster.x - x - 0.5f);
+    for (int y = y0; y < y1; ++y) weight_y[y - y0] = filter_->evaluate_y(p_raster.y - y - 0.5f);
+    double units_per_weight[3];
+    for (int c = 0; c < 3; ++c) units_per_weight[c] = double(v[c]) / kSplatUnit;
+    for (int y = y0; y < y1; ++y) {
+        if (weight_y[y - y0] == 0) continue;
         for (int x = x0; x < x1; ++x) {
-            float w = filter_->evaluate({p_raster.x - x - 0.5f, p_raster.y - y - 0.5f});
+            float w = weight_x[x - x0] * weight_y[y - y0];
             if (w == 0) continue;
             std::atomic<int64_t> *sum = &splats_[index({x, y}) * 3];
             for (int c = 0; c < 3; ++c) {
-                double units = std::nearbyint(double(w) * v[c] / kSplatUnit);
+                double units = std::nearbyint(double(w) * units_per_weight[c]);
                 if (std::abs(units) > kSplatLimit) {
                     splat_overflow_ = true;
                     units = std::copysign(kSplatLimit, units);
@@ -105,6 +114,7 @@ void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWave
                 if (__builtin_add_overflow(old, delta, &unused)) splat_overflow_ = true;
             }
         }
+    }
 }
 
 Image Film::get_image(double splat_scale) const {

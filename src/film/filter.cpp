@@ -32,9 +32,8 @@ FilterSample FilterSampler::sample(Vec2f u) const {
 
 // ---- Box ----
 
-float BoxFilter::evaluate(Vec2f p) const {
-    return (std::abs(p.x) <= radius_.x && std::abs(p.y) <= radius_.y) ? 1.f : 0.f;
-}
+float BoxFilter::evaluate_x(float x) const { return std::abs(x) <= radius_.x ? 1.f : 0.f; }
+float BoxFilter::evaluate_y(float y) const { return std::abs(y) <= radius_.y ? 1.f : 0.f; }
 
 FilterSample BoxFilter::sample(Vec2f u) const {
     return {{lerp(u.x, -radius_.x, radius_.x), lerp(u.y, -radius_.y, radius_.y)}, 1.f};
@@ -62,9 +61,11 @@ GaussianFilter::GaussianFilter(Vec2f radius, float sigma)
     sampler_ = FilterSampler(*this);
 }
 
-float GaussianFilter::evaluate(Vec2f p) const {
-    return std::max(0.f, gaussian(p.x, sigma_) - value_at_radius_x_) *
-           std::max(0.f, gaussian(p.y, sigma_) - value_at_radius_y_);
+float GaussianFilter::evaluate_x(float x) const {
+    return std::max(0.f, gaussian(x, sigma_) - value_at_radius_x_);
+}
+float GaussianFilter::evaluate_y(float y) const {
+    return std::max(0.f, gaussian(y, sigma_) - value_at_radius_y_);
 }
 
 float GaussianFilter::integral() const {
@@ -74,9 +75,8 @@ float GaussianFilter::integral() const {
 
 // ---- Triangle ----
 
-float TriangleFilter::evaluate(Vec2f p) const {
-    return std::max(0.f, radius_.x - std::abs(p.x)) * std::max(0.f, radius_.y - std::abs(p.y));
-}
+float TriangleFilter::evaluate_x(float x) const { return std::max(0.f, radius_.x - std::abs(x)); }
+float TriangleFilter::evaluate_y(float y) const { return std::max(0.f, radius_.y - std::abs(y)); }
 
 namespace {
 
@@ -116,9 +116,8 @@ float MitchellFilter::mitchell_1d(float x) const {
     return 0;
 }
 
-float MitchellFilter::evaluate(Vec2f p) const {
-    return mitchell_1d(2 * p.x / radius_.x) * mitchell_1d(2 * p.y / radius_.y);
-}
+float MitchellFilter::evaluate_x(float x) const { return mitchell_1d(2 * x / radius_.x); }
+float MitchellFilter::evaluate_y(float y) const { return mitchell_1d(2 * y / radius_.y); }
 
 // ---- Lanczos sinc ----
 
@@ -155,8 +154,11 @@ LanczosSincFilter::LanczosSincFilter(Vec2f radius, float tau)
     sampler_ = FilterSampler(*this);
 }
 
-float LanczosSincFilter::evaluate(Vec2f p) const {
-    return float(windowed_sinc(p.x, radius_.x, tau_) * windowed_sinc(p.y, radius_.y, tau_));
+float LanczosSincFilter::evaluate_x(float x) const {
+    return float(windowed_sinc(x, radius_.x, tau_));
+}
+float LanczosSincFilter::evaluate_y(float y) const {
+    return float(windowed_sinc(y, radius_.y, tau_));
 }
 
 // ---- Factory ----
@@ -167,6 +169,12 @@ Vec2f read_radius(const ParameterDictionary &params, float def) {
     Vec2f r{params.get_one_float("xradius", def), params.get_one_float("yradius", def)};
     if (!(r.x > 0)) throw InputError(params.location("xradius"), "\"xradius\" must be positive");
     if (!(r.y > 0)) throw InputError(params.location("yradius"), "\"yradius\" must be positive");
+    if (r.x > MaxFilterRadius)
+        throw InputError(params.location("xradius"), "\"xradius\" must be at most " +
+                                                         std::to_string(int(MaxFilterRadius)) + " pixels");
+    if (r.y > MaxFilterRadius)
+        throw InputError(params.location("yradius"), "\"yradius\" must be at most " +
+                                                         std::to_string(int(MaxFilterRadius)) + " pixels");
     return r;
 }
 

@@ -17,6 +17,10 @@
 
 namespace caustica {
 
+// Larger radii are rejected: no real filter is wider, and the bound lets a splat keep its
+// per-column and per-row weights on the stack.
+inline constexpr float MaxFilterRadius = 32;
+
 struct FilterSample {
     Vec2f p;          // offset from the pixel centre, within [-radius, radius]
     float weight = 1; // f(p) / pdf(p), up to a constant factor common to all samples
@@ -27,7 +31,11 @@ class Filter {
     virtual ~Filter() = default;
     // Half-widths of the support in x and y (pixels).
     virtual Vec2f radius() const = 0;
-    virtual float evaluate(Vec2f p) const = 0;
+    // Every pbrt-v4 filter is separable, a product of one-dimensional profiles along x and y;
+    // splats use that to evaluate one weight per column and per row of their footprint.
+    virtual float evaluate_x(float x) const = 0;
+    virtual float evaluate_y(float y) const = 0;
+    float evaluate(Vec2f p) const { return evaluate_x(p.x) * evaluate_y(p.y); }
     // Integral of evaluate() over its support; splats are divided by it.
     virtual float integral() const = 0;
     virtual FilterSample sample(Vec2f u) const = 0;
@@ -54,7 +62,8 @@ class BoxFilter final : public Filter {
   public:
     explicit BoxFilter(Vec2f radius = {0.5f, 0.5f}) : radius_(radius) {}
     Vec2f radius() const override { return radius_; }
-    float evaluate(Vec2f p) const override;
+    float evaluate_x(float x) const override;
+    float evaluate_y(float y) const override;
     float integral() const override { return 4 * radius_.x * radius_.y; }
     FilterSample sample(Vec2f u) const override;
 
@@ -68,7 +77,8 @@ class GaussianFilter final : public Filter {
   public:
     explicit GaussianFilter(Vec2f radius = {1.5f, 1.5f}, float sigma = 0.5f);
     Vec2f radius() const override { return radius_; }
-    float evaluate(Vec2f p) const override;
+    float evaluate_x(float x) const override;
+    float evaluate_y(float y) const override;
     float integral() const override;
     FilterSample sample(Vec2f u) const override { return sampler_.sample(u); }
 
@@ -83,7 +93,8 @@ class TriangleFilter final : public Filter {
   public:
     explicit TriangleFilter(Vec2f radius = {2, 2}) : radius_(radius) {}
     Vec2f radius() const override { return radius_; }
-    float evaluate(Vec2f p) const override;
+    float evaluate_x(float x) const override;
+    float evaluate_y(float y) const override;
     float integral() const override { return sqr(radius_.x) * sqr(radius_.y); }
     FilterSample sample(Vec2f u) const override;
 
@@ -97,7 +108,8 @@ class MitchellFilter final : public Filter {
   public:
     explicit MitchellFilter(Vec2f radius = {2, 2}, float b = 1.f / 3, float c = 1.f / 3);
     Vec2f radius() const override { return radius_; }
-    float evaluate(Vec2f p) const override;
+    float evaluate_x(float x) const override;
+    float evaluate_y(float y) const override;
     // Each 1D cubic integrates to 1 over [-2, 2] for any B and C; scaled to [-r, r] that is r/2.
     float integral() const override { return radius_.x * radius_.y / 4; }
     FilterSample sample(Vec2f u) const override { return sampler_.sample(u); }
@@ -114,7 +126,8 @@ class LanczosSincFilter final : public Filter {
   public:
     explicit LanczosSincFilter(Vec2f radius = {4, 4}, float tau = 3);
     Vec2f radius() const override { return radius_; }
-    float evaluate(Vec2f p) const override;
+    float evaluate_x(float x) const override;
+    float evaluate_y(float y) const override;
     float integral() const override { return integral_; }
     FilterSample sample(Vec2f u) const override { return sampler_.sample(u); }
 
