@@ -22,14 +22,15 @@ float wrap(float lambda) { return lambda > LambdaMax ? lambda - kRange : lambda;
 
 SampledWavelengths SampledWavelengths::sample_visible(float u) {
     SampledWavelengths s;
-    s.lambda_[0] = clamp(sample_visible_wavelengths(u), LambdaMin, LambdaMax);
-    float delta = kRange / NumWavelengths;
-    for (int i = 1; i < NumWavelengths; ++i) s.lambda_[i] = wrap(s.lambda_[0] + i * delta);
-    // Balance-heuristic MIS over the rotations (see header): the same combined density for all.
-    float sum = 0;
-    for (int i = 0; i < NumWavelengths; ++i) sum += visible_wavelengths_pdf(s.lambda_[i]);
-    s.pdf_ = SampledSpectrum(sum / NumWavelengths);
-    s.hero_pdf_ = visible_wavelengths_pdf(s.lambda_[0]);
+    // Rotations of the primary sample u (see header): member i is the visible density's inverse
+    // CDF at u + i/n, so each member has the visible density itself as its combined pdf.
+    for (int i = 0; i < NumWavelengths; ++i) {
+        float rotated = u + float(i) / NumWavelengths;
+        if (rotated >= 1) rotated -= 1;
+        s.lambda_[i] = clamp(sample_visible_wavelengths(rotated), LambdaMin, LambdaMax);
+        s.pdf_[i] = visible_wavelengths_pdf(s.lambda_[i]);
+    }
+    s.hero_pdf_ = s.pdf_[0];
     return s;
 }
 

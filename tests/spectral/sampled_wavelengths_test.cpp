@@ -125,6 +125,20 @@ TEST(SampledWavelengths, VisibleSamplerInvertsTheCdf) {
         EXPECT_NEAR(cdf(sample_visible_wavelengths(u)), u, 2e-4) << u;
 }
 
+// Every member of a hero set is the visible density's inverse CDF at a rotated primary sample,
+// so its CDF value is the rotation of u by i/n, and its pdf is the visible density there.
+TEST(SampledWavelengths, MembersAreRotationsInSampleSpace) {
+    NumericCdf cdf;
+    for (float u = 0.005f; u < 1; u += 0.01f) {
+        SampledWavelengths w = SampledWavelengths::sample_visible(u);
+        for (int i = 0; i < NumWavelengths; ++i) {
+            double rotated = std::fmod(double(u) + double(i) / NumWavelengths, 1.0);
+            EXPECT_NEAR(cdf(w[i]), rotated, 2e-4) << "u " << u << " member " << i;
+            EXPECT_FLOAT_EQ(w.pdf()[i], visible_wavelengths_pdf(w[i]));
+        }
+    }
+}
+
 // Kolmogorov-Smirnov: N samples from uniform u; the sup distance between the empirical CDF and
 // the numeric CDF is below 1.63 / sqrt(N) with 99% probability for a correct sampler.
 TEST(SampledWavelengths, VisibleSamplerPassesKolmogorovSmirnov) {
