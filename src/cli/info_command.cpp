@@ -32,6 +32,9 @@ int run_info(const std::string &scene_path) {
     std::printf("  absorbing interiors:       %s\n", yes_no(f.absorbing_interiors));
     std::printf("  participating media:       %s\n", yes_no(f.media));
     std::printf("  subsurface scattering:     %s\n", yes_no(f.subsurface));
+    std::printf("  image showing emitters:    %.0f%%\n", 100 * f.probe.view_emitters);
+    std::printf("  image showing specular:    %.0f%%\n", 100 * f.probe.view_specular);
+    std::printf("  light meeting specular:    %.0f%%\n", 100 * f.probe.lights_behind_specular);
     return 0;
 }
 

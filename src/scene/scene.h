@@ -9,6 +9,7 @@
 #include "geometry/shape_factory.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
+#include "scene/scene_probe.h"
 #include "materials/material.h"
 #include "media/medium_interface.h"
 #include "params/parameters.h"
@@ -33,9 +34,8 @@ struct SceneFeatures {
     bool medium_boundaries = false;      // shapes without a material, which rays pass through
     bool subsurface = false;
     bool profile_subsurface = false;     // a diffusion-profile BSSRDF, which only pt samples
-    bool visible_emitters = false;       // area or infinite lights the camera can see
+    SceneProbe probe;                    // what camera and lights see (scene_probe.h)
     bool absorbing_interiors = false;
-    bool all_spectra_constant = false;
 };
 
 // Command-line choices that override the scene file.

@@ -288,12 +288,16 @@ void analyse_features(const SceneDescription &d, Scene &scene) {
     }
     f.media = !scene.media.empty();
     for (const MaterialPtr &m : scene.materials) f.media |= m->interior_medium() != nullptr;
-    f.visible_emitters = !scene.lights.empty();
     bool non_specular_surfaces = false;
     for (const MaterialPtr &m : scene.materials) non_specular_surfaces |= m->has_non_specular_lobe();
     f.caustic_paths = f.specular_surfaces && non_specular_surfaces && !scene.lights.empty();
+    f.probe = probe_scene(scene);
 }
 
+} // namespace
+
+namespace {
+std::string percent(float fraction) { return std::to_string(int(std::lround(100 * fraction))) + "%"; }
 } // namespace
 
 IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool camera_models_importance) {
@@ -306,6 +310,18 @@ IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool came
     if (!camera_models_importance)
         return {"pt", "the scene has caustic paths, but its camera (orthographic) cannot receive "
                       "light paths"};
+    // Both ends of most paths behind specular surfaces (a pool seen and lit through its water):
+    // the paths that matter are specular-diffuse-specular, which connections cannot sample and
+    // only merging renders, so vcm's connections would be cost without benefit.
+    constexpr float SpecularDominated = 0.5f;
+    if (features.probe.view_specular >= SpecularDominated &&
+        features.probe.lights_behind_specular >= SpecularDominated)
+        return {"sppm", "most of the image (" + percent(features.probe.view_specular) +
+                            ") shows purely specular surfaces and most emitted light (" +
+                            percent(features.probe.lights_behind_specular) +
+                            ") first meets one, so specular-diffuse-specular paths dominate; "
+                            "only photon merging renders them, and sppm spends nothing on "
+                            "connections that cannot"};
     return {"vcm", std::string("specular surfaces focus light onto diffuse ones (caustics") +
                        (features.dispersive_materials ? ", with dispersion" : "") +
                        "), which camera paths find only by chance; vertex connection and merging "

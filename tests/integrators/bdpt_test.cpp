@@ -146,11 +146,14 @@ TEST(BdptCornellBox, PointLightAgreesWithPathTracer) {
     std::string scene = dir + "/point.pbrt";
     write_cornell_box_lit_by(scene, "LightSource \"point\" \"point3 from\" [ 0.2 1.7 0.1 ] "
                                     "\"blackbody I\" [ 4000 ] \"float scale\" [ 3 ]");
-    const std::string common = " --spp 32 --resolution 64x64";
-    RgbImage a = render(dir, "a", scene, "--integrator bdpt --seed 1" + common);
-    RgbImage b = render(dir, "b", scene, "--integrator bdpt --seed 2" + common);
-    RgbImage pt_a = render(dir, "pt-a", scene, "--integrator pt --seed 3" + common);
-    RgbImage pt_b = render(dir, "pt-b", scene, "--integrator pt --seed 4" + common);
+    // The path tracer gets four times the samples: its rare paths through points close to the
+    // light (1/r^2) make its pixel values heavy-tailed, which at 32 samples left one block 11%
+    // low with a variance estimate too small to cover it.
+    const std::string common = " --resolution 64x64";
+    RgbImage a = render(dir, "a", scene, "--integrator bdpt --spp 32 --seed 1" + common);
+    RgbImage b = render(dir, "b", scene, "--integrator bdpt --spp 32 --seed 2" + common);
+    RgbImage pt_a = render(dir, "pt-a", scene, "--integrator pt --spp 128 --seed 3" + common);
+    RgbImage pt_b = render(dir, "pt-b", scene, "--integrator pt --spp 128 --seed 4" + common);
     ASSERT_EQ(a.width, 64);
     const int block = 8;
     std::vector<BlockEstimate> bdpt = block_estimates(a, b, block);
