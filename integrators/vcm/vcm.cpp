@@ -602,6 +602,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     const size_t pixel_count = renderer.pixel_count();
     const Vec2i full = scene.film->resolution();
     const bool use_vc = mode_ == Mode::VertexConnectionMerging;
+    // Merging is what renders specular-diffuse-specular paths, which connections cannot; where
+    // the scene analysis finds no caustic paths, vcm skips the photon pass (no photon maps, no
+    // range searches) and is bidirectional path tracing on the same stored light vertices.
+    const bool use_vm = !use_vc || scene.features.caustic_paths;
     WavelengthGroups groups(wavelength_groups_, scene.overrides.seed);
 
     // Per wavelength group.
@@ -621,14 +625,14 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     renderer.run([&](int iteration) {
         groups.start_iteration(scene, iteration, pixel_count, pixel_count);
         const float radius = base_radius_ * std::pow(float(iteration + 1), (alpha_ - 1) / 2);
-        Iteration it{scene, max_depth_, use_vc, true, radius, groups, {}, {}, {},
+        Iteration it{scene, max_depth_, use_vc, use_vm, radius, groups, {}, {}, {},
                      float(pixel_count), float(full.x) * float(full.y)};
         for (int g = 0; g < groups.count(); ++g) {
             const float light_path_count = float(std::max<size_t>(groups.light_path_count(g), 1));
             // The kernels' acceptance regions times the light paths gathered (vcm_mis.h).
             const float eta_vcm = Pi * radius * radius * light_path_count;
             const float eta_volume = 4.f / 3.f * Pi * radius * radius * radius * light_path_count;
-            it.weights.push_back(VcmWeights::make(use_vc, true, eta_vcm, eta_volume));
+            it.weights.push_back(VcmWeights::make(use_vc, use_vm, eta_vcm, eta_volume));
             it.vm_normalization.push_back(1 / eta_vcm);
             it.volume_normalization.push_back(1 / eta_volume);
         }
@@ -654,7 +658,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                 map->positions.clear();
                 map->photons.clear();
             }
-        for (size_t index = 0; index < pixel_count; ++index) {
+        for (size_t index = 0; index < pixel_count && use_vm; ++index) {
             const StoredPath &path = light_paths[index];
             const int g = groups.group_of_pixel(index);
             for (uint32_t i = 0; i < path.count; ++i) {
