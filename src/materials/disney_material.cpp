@@ -275,13 +275,10 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
         std::string preset = params.get_one_string("preset", "");
         if (!preset.empty()) {
             auto measured = find_measured_subsurface_medium(preset);
-            if (!measured) {
-                std::string names;
-                for (const MeasuredSubsurfaceMedium &m : measured_subsurface_media())
-                    names += (names.empty() ? "" : ", ") + std::string(m.name);
-                throw InputError(params.location("preset"), "unknown subsurface preset \"" + preset +
-                                                                "\" (Jensen et al. 2001's media: " + names + ")");
-            }
+            if (!measured)
+                throw InputError(params.location("preset"),
+                                 "unknown subsurface preset \"" + preset + "\" (Jensen et al. 2001's media: " +
+                                     measured_subsurface_media_names() + ")");
             if (params.has("scatterDistance"))
                 throw InputError(params.location("scatterDistance"),
                                  "give either \"preset\" or \"scatterDistance\" for the dipole, not both");

@@ -52,4 +52,11 @@ std::optional<MeasuredSubsurfaceMedium> find_measured_subsurface_medium(std::str
     return std::nullopt;
 }
 
+std::string measured_subsurface_media_names() {
+    std::string names;
+    for (const MeasuredSubsurfaceMedium &medium : JensenMedia)
+        names += (names.empty() ? "" : ", ") + std::string(medium.name);
+    return names;
+}
+
 } // namespace caustica

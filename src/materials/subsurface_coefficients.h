@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace caustica {
@@ -34,5 +35,7 @@ struct MeasuredSubsurfaceMedium {
 // All the media of the table, and one looked up by name, ignoring case ("skin1", "Skin1").
 std::span<const MeasuredSubsurfaceMedium> measured_subsurface_media();
 std::optional<MeasuredSubsurfaceMedium> find_measured_subsurface_medium(std::string_view name);
+// The media's names, comma-separated, for error messages about unknown presets.
+std::string measured_subsurface_media_names();
 
 } // namespace caustica

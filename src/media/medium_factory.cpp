@@ -40,13 +40,10 @@ MediumPtr create_medium(const std::string &type, const ParameterDictionary &para
     std::string preset = params.get_one_string("preset", "");
     if (!preset.empty()) {
         auto measured = find_measured_subsurface_medium(preset);
-        if (!measured) {
-            std::string names;
-            for (const MeasuredSubsurfaceMedium &m : measured_subsurface_media())
-                names += (names.empty() ? "" : ", ") + std::string(m.name);
-            throw InputError(params.location("preset"),
-                             "unknown medium preset \"" + preset + "\" (Jensen et al. 2001's media: " + names + ")");
-        }
+        if (!measured)
+            throw InputError(params.location("preset"), "unknown medium preset \"" + preset +
+                                                            "\" (Jensen et al. 2001's media: " +
+                                                            measured_subsurface_media_names() + ")");
         // The reduced scattering coefficient stands for sigma_s with isotropic scattering
         // (similarity theory), as pbrt does with these presets.
         sigma_a = std::make_shared<RGBUnboundedSpectrum>(RGBColorSpace::srgb(), measured->sigma_a);
