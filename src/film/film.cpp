@@ -25,7 +25,8 @@ Film::Film(Vec2i full_resolution, PixelBounds pixel_bounds, std::unique_ptr<Filt
       output_from_sensor_(output.rgb_from_xyz_matrix() * sensor.xyz_from_sensor_rgb()),
       max_component_value_(max_component_value), filename_(std::move(filename)),
       save_fp16_(save_fp16), pixels_(size_t(pixel_bounds.width()) * pixel_bounds.height()),
-      splats_(pixels_.size() * 3) {
+      restored_splats_(pixels_.size() * 3),
+      thread_splats_([count = pixels_.size() * 3] { return std::vector<int64_t>(count, 0); }) {
     if (pixel_bounds_.empty()) throw std::invalid_argument("film: empty pixel bounds");
 }
 
@@ -97,27 +98,35 @@ void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWave
     for (int y = y0; y < y1; ++y) weight_y[y - y0] = filter_->evaluate_y(p_raster.y - y - 0.5f);
     double units_per_weight[3];
     for (int c = 0; c < 3; ++c) units_per_weight[c] = double(v[c]) / kSplatUnit;
+    std::vector<int64_t> &splats = thread_splats_.local();
     for (int y = y0; y < y1; ++y) {
         if (weight_y[y - y0] == 0) continue;
         for (int x = x0; x < x1; ++x) {
             float w = weight_x[x - x0] * weight_y[y - y0];
             if (w == 0) continue;
-            std::atomic<int64_t> *sum = &splats_[index({x, y}) * 3];
+            int64_t *sum = &splats[index({x, y}) * 3];
             for (int c = 0; c < 3; ++c) {
                 double units = std::nearbyint(double(w) * units_per_weight[c]);
                 if (std::abs(units) > kSplatLimit) {
                     splat_overflow_ = true;
                     units = std::copysign(kSplatLimit, units);
                 }
-                int64_t delta = int64_t(units), old = sum[c].fetch_add(delta, std::memory_order_relaxed);
-                int64_t unused;
-                if (__builtin_add_overflow(old, delta, &unused)) splat_overflow_ = true;
+                if (__builtin_add_overflow(sum[c], int64_t(units), &sum[c])) splat_overflow_ = true;
             }
         }
     }
 }
 
+std::vector<int64_t> Film::splat_sums() const {
+    std::vector<int64_t> sums = restored_splats_;
+    for (const std::vector<int64_t> &splats : thread_splats_)
+        for (size_t i = 0; i < sums.size(); ++i)
+            if (__builtin_add_overflow(sums[i], splats[i], &sums[i])) splat_overflow_ = true;
+    return sums;
+}
+
 Image Film::get_image(double splat_scale) const {
+    const std::vector<int64_t> splats = splat_sums();
     Image image(pixel_bounds_.width(), pixel_bounds_.height());
     image.origin = pixel_bounds_.min;
     image.full_resolution = full_resolution_;
@@ -128,7 +137,7 @@ Image Film::get_image(double splat_scale) const {
             double sensor[3];
             for (int c = 0; c < 3; ++c) {
                 sensor[c] = p.weight_sum != 0 ? p.rgb_sum[c] / p.weight_sum : 0;
-                double splat = double(splats_[i * 3 + c].load(std::memory_order_relaxed)) * kSplatUnit;
+                double splat = double(splats[i * 3 + c]) * kSplatUnit;
                 sensor[c] += splat_scale * splat / filter_integral_;
             }
             RGB v{float(sensor[0]), float(sensor[1]), float(sensor[2])};
@@ -182,9 +191,7 @@ template <typename T> void read_array(std::istream &in, std::vector<T> &values, 
 void Film::save_state(std::ostream &out) const {
     write_array(out, pixels_);
     write_array(out, moments_);
-    std::vector<int64_t> splats(splats_.size());
-    for (size_t i = 0; i < splats.size(); ++i) splats[i] = splats_[i].load(std::memory_order_relaxed);
-    write_array(out, splats);
+    write_array(out, splat_sums());
     write_u64(out, splat_overflow_.load() ? 1 : 0);
 }
 
@@ -194,12 +201,13 @@ void Film::restore_state(std::istream &in) {
     std::vector<Moments> moments;
     read_array(in, moments, moments_.size());
     std::vector<int64_t> splats;
-    read_array(in, splats, splats_.size());
+    read_array(in, splats, restored_splats_.size());
     const uint64_t overflow = read_u64(in);
     if (!in || overflow > 1) throw std::runtime_error("film state: truncated");
     pixels_ = std::move(pixels);
     moments_ = std::move(moments);
-    for (size_t i = 0; i < splats.size(); ++i) splats_[i].store(splats[i], std::memory_order_relaxed);
+    restored_splats_ = std::move(splats);
+    thread_splats_.clear();
     splat_overflow_ = overflow != 0;
 }
 
