@@ -48,8 +48,16 @@ PiecewiseConstant1D::PiecewiseConstant1D(std::span<const float> f) : func_(f.beg
 
 float PiecewiseConstant1D::sample(float u, float *pdf, int *offset) const {
     int n = int(func_.size());
-    auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-    int o = clamp(int(it - cdf_.begin()) - 1, 0, n - 1);
+    // The last cdf entry <= u (std::upper_bound minus one), by a binary search whose steps are
+    // conditional moves: u is random, so a branching search mispredicts about half its steps,
+    // which made this the costliest part of sampling the pixel filter for every camera ray.
+    const float *first = cdf_.data();
+    for (size_t length = cdf_.size(); length > 1;) {
+        const size_t half = length / 2;
+        first = first[half] <= u ? first + half : first;
+        length -= half;
+    }
+    int o = clamp(int(first - cdf_.data()), 0, n - 1);
     if (offset) *offset = o;
     float du = u - cdf_[o];
     if (cdf_[o + 1] - cdf_[o] > 0) du /= cdf_[o + 1] - cdf_[o];
