@@ -16,6 +16,7 @@
 #include "spatial/range_search.h"
 
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -652,30 +653,33 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         if (!completed) return false;
 
         // The photons of each wavelength group, in pixel order so that results do not depend on
-        // which thread traced which path.
-        for (int g = 0; g < groups.count(); ++g)
+        // which thread traced which path. The groups' maps are independent, so they are
+        // assembled and indexed in parallel (one after another, they kept the second thread
+        // idle for a tenth of the render).
+        std::vector<std::vector<uint32_t>> group_pixels(groups.count());
+        for (size_t index = 0; index < pixel_count && use_vm; ++index)
+            group_pixels[groups.group_of_pixel(index)].push_back(uint32_t(index));
+        tbb::parallel_for(0, groups.count(), [&](int g) {
             for (PhotonMap *map : {&surface_photons[g], &medium_photons[g]}) {
                 map->positions.clear();
                 map->photons.clear();
             }
-        for (size_t index = 0; index < pixel_count && use_vm; ++index) {
-            const StoredPath &path = light_paths[index];
-            const int g = groups.group_of_pixel(index);
-            for (uint32_t i = 0; i < path.count; ++i) {
-                const LightVertex &v = (*path.vertices)[path.begin + i];
-                const ScatteringPoint &point = v.point;
-                PhotonMap &map = point.in_medium() ? medium_photons[g] : surface_photons[g];
-                map.positions.push_back(point.p);
-                map.photons.push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm,
-                                             encode_octahedral(point.wo),
-                                             point.in_medium() ? 0u : encode_octahedral(point.ng), v.path_length,
-                                             uint16_t(v.secondary_terminated)});
+            for (uint32_t index : group_pixels[g]) {
+                const StoredPath &path = light_paths[index];
+                for (uint32_t i = 0; i < path.count; ++i) {
+                    const LightVertex &v = (*path.vertices)[path.begin + i];
+                    const ScatteringPoint &point = v.point;
+                    PhotonMap &map = point.in_medium() ? medium_photons[g] : surface_photons[g];
+                    map.positions.push_back(point.p);
+                    map.photons.push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm,
+                                                 encode_octahedral(point.wo),
+                                                 point.in_medium() ? 0u : encode_octahedral(point.ng),
+                                                 v.path_length, uint16_t(v.secondary_terminated)});
+                }
             }
-        }
-        for (int g = 0; g < groups.count(); ++g) {
             surface_photons[g].search->build(surface_photons[g].positions, radius);
             medium_photons[g].search->build(medium_photons[g].positions, radius);
-        }
+        });
 
         // Pass 2: one camera subpath per pixel.
         Film &film = *scene.film;
