@@ -69,7 +69,7 @@ bool leave_through_profile(const Scene &scene, const DisneyMaterial &material, c
     ++rays;
     std::optional<SubsurfaceExit> exit = probe.sample(entry, as_profile(profile), u_strategy, u_plane, scene);
     if (!exit) return false;
-    st.beta *= exit->weight;
+    st.beta *= exit->weight * material.cavity_fade(entry.n, exit->si.n);
     if (st.beta.is_black()) return false;
 
     SurfaceInteraction &si = exit->si;

@@ -309,6 +309,15 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
         sub.enabled = true;
         sub.scatter_distance = distance->spectrum();
     }
+    if (params.has("cavityFade")) {
+        if (sub.model == SubsurfaceModel::RandomWalk)
+            throw InputError(params.location("cavityFade"),
+                             "\"cavityFade\" applies to the profile models (\"string subsurface\" \"diffusion\" "
+                             "or \"dipole\"); the random walk follows the geometry and needs no fade");
+        sub.cavity_fade = params.get_one_float("cavityFade", 0);
+        if (!(sub.cavity_fade >= 0 && sub.cavity_fade <= 1))
+            throw InputError(params.location("cavityFade"), "\"cavityFade\" must lie in [0, 1]");
+    }
     if (sub.model == SubsurfaceModel::Dipole && !(reference_eta >= 1))
         throw InputError(params.location("eta"), "the dipole needs an interior index \"eta\" >= 1 (its boundary "
                                                  "condition is for light leaving a denser medium)");

@@ -33,6 +33,7 @@
 #include "spectral/spectrum.h"
 #include "textures/texture.h"
 
+#include <algorithm>
 #include <variant>
 
 namespace caustica {
@@ -58,6 +59,8 @@ struct DisneySubsurface {
     // Dipole with a preset: Jensen's coefficients (mm^-1) and the scene units' conversion.
     SpectrumPtr sigma_a, sigma_s_reduced;
     float scale = 1;
+    // Profile models: the strength of the cavity fade (see DisneyMaterial::cavity_fade).
+    float cavity_fade = 0;
     SourceLocation location;      // of "subsurface", for errors about the model
 };
 
@@ -96,6 +99,20 @@ class DisneyMaterial final : public Material {
     // at a point where it leaves (wo must point inside there).
     DisneySubsurfaceProfile subsurface_profile(const SurfaceInteraction &si, const SampledWavelengths &lambda) const;
     BSDF subsurface_exit_bsdf(const SurfaceInteraction &si, ScratchBuffer &scratch) const;
+    // Burley 2015, section 2.4 and Figure 12: a profile is the answer for a flat half-space and
+    // overestimates what crosses a cavity between surfaces that face each other, so the notes
+    // fade the diffusion result "as the surfaces become opposing", by the angle between the
+    // entry's and the exit's (outward) normals. The factor is
+    //     1 - cavityFade * max(0, -n_entry . n_exit):
+    // 1 wherever the normals are within 90 degrees of each other (flat and convex geometry are
+    // untouched), falling linearly to 1 - cavityFade for exactly opposed ones. On a thin sheet
+    // the half-space profile, applied to both faces, reflects up to twice its albedo; a full
+    // fade brings it back to what a half-space reflects (tested), but it also removes the light
+    // a thin part really transmits (ears, fingers), which has no other path here. So it is an
+    // artist's control, off by default (cavityFade 0); the random walk needs no fade.
+    float cavity_fade(Vec3f entry_normal, Vec3f exit_normal) const {
+        return 1 - subsurface_.cavity_fade * std::clamp(-dot(entry_normal, exit_normal), 0.f, 1.f);
+    }
 
     bool is_thin() const { return thin_; }
     // The BxDF's inputs at a point: textures evaluated and clamped to their ranges.

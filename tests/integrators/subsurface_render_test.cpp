@@ -29,6 +29,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 using namespace caustica::testing;
 
@@ -41,8 +42,16 @@ Shape "trianglemesh"
   "point3 P" [ -20 -20 -20  -20 -20 0  -20 20 -20  -20 20 0  20 -20 -20  20 -20 0  20 20 -20  20 20 0 ]
 )";
 
-// The white furnace: radiance 1 from every direction, a 1.75-unit-wide view of the slab.
-std::string furnace_scene(const std::string &material) {
+// The slab's top 0.05 units: a thin sheet.
+const char *const Sheet = R"(
+Shape "trianglemesh"
+  "integer indices" [ 0 3 2 0 1 3 4 6 7 4 7 5 0 4 5 0 5 1 2 7 6 2 3 7 0 6 4 0 2 6 1 5 7 1 7 3 ]
+  "point3 P" [ -20 -20 -0.05  -20 -20 0  -20 20 -0.05  -20 20 0  20 -20 -0.05  20 -20 0  20 20 -0.05  20 20 0 ]
+)";
+
+// The white furnace: radiance 1 from every direction, a 1.75-unit-wide view of the slab (or of
+// other geometry).
+std::string furnace_scene(const std::string &material, const char *geometry = Slab) {
     return std::string(R"(
 LookAt 0 0 10  0 0 0  0 1 0
 Camera "perspective" "float fov" [ 10 ]
@@ -51,7 +60,7 @@ Sampler "independent"
 Integrator "path" "integer maxdepth" [ 60000 ]
 WorldBegin
 LightSource "infinite" "rgb L" [ 1 1 1 ]
-)") + material + "\n" + Slab;
+)") + material + "\n" + geometry;
 }
 
 struct MeanEstimate {
@@ -199,6 +208,59 @@ Material "disney" "rgb baseColor" [ 0.8 0.8 0.8 ] "float roughness" [ 0 ] "float
         }
         EXPECT_GT(mean_distance[0], 1.25 * mean_distance[1]) << model << ": red vs green";
         EXPECT_GT(mean_distance[1], 1.25 * mean_distance[2]) << model << ": green vs blue";
+    }
+}
+
+// The cavity fade of Burley 2015, Figure 12 (DisneyMaterial::cavity_fade).
+//   - On the thick slab no exit the probe can reach faces against its entry (the faces within
+//     reach are the top, normal parallel, and the sides, normal perpendicular), so the fade's
+//     factor is exactly 1 everywhere and the image must be the same, pixel for pixel.
+//   - A sheet 0.05 thick with scatterDistance 0.1 is the failure Figure 12 is about: the profile
+//     of a half-space, applied to both faces, lets light entering the bottom leave through the
+//     top as well, and in the furnace the top then reflects far more than the albedo (1.45 in
+//     red for a base colour of 0.8). A full fade gives no weight to exits on the face opposite the
+//     entry, which leaves the top face reflecting exactly what a half-space reflects: its mean
+//     must match the thick slab's within the 4-standard-error bound plus 1% (2048-spp renders
+//     agree to 0.2%), and the unfaded sheet must exceed it by far (30% asked).
+TEST(SubsurfaceRender, CavityFadeActsOnlyBetweenOpposedSurfaces) {
+    std::string dir = scratch_dir("subsurface-cavity");
+    const std::string material = std::string(Base) +
+                                 "\n  \"rgb scatterDistance\" [ 0.1 0.1 0.1 ] \"string subsurface\" \"diffusion\"";
+    const std::string faded = material + " \"float cavityFade\" [ 1 ]";
+    {
+        std::string plain_path = dir + "/thick.exr", faded_path = dir + "/thick-faded.exr";
+        std::ofstream(dir + "/thick.pbrt") << furnace_scene(material);
+        std::ofstream(dir + "/thick-faded.pbrt") << furnace_scene(faded);
+        ASSERT_EQ(run_caustica("render " + dir + "/thick.pbrt --spp 16 --seed 3 --quiet -o " + plain_path), 0);
+        ASSERT_EQ(run_caustica("render " + dir + "/thick-faded.pbrt --spp 16 --seed 3 --quiet -o " + faded_path), 0);
+        RgbImage plain = read_rgb(plain_path), fade = read_rgb(faded_path);
+        ASSERT_EQ(plain.rgb.size(), fade.rgb.size());
+        for (size_t i = 0; i < plain.rgb.size(); ++i) ASSERT_EQ(plain.rgb[i], fade.rgb[i]) << "value " << i;
+    }
+    MeanEstimate half_space = render_mean(dir, "half-space", furnace_scene(material), 1024, 30);
+    MeanEstimate sheet = render_mean(dir, "sheet", furnace_scene(material, Sheet), 1024, 31);
+    MeanEstimate faded_sheet = render_mean(dir, "sheet-faded", furnace_scene(faded, Sheet), 1024, 32);
+    expect_same_mean(faded_sheet, half_space, 0.01, "faded sheet against the half-space");
+    for (int c = 0; c < 3; ++c)
+        EXPECT_GT(sheet.mean[c], 1.3 * half_space.mean[c]) << "unfaded sheet, channel " << c;
+}
+
+// cavityFade is a parameter of the profile models only, within [0, 1].
+TEST(SubsurfaceRender, CavityFadeIsCheckedWhereItIsRead) {
+    std::string dir = scratch_dir("subsurface-cavity-errors");
+    const std::string random_walk = std::string(Base) + "\n  \"rgb scatterDistance\" [ 0.1 0.1 0.1 ] \"float cavityFade\" [ 1 ]";
+    const std::string out_of_range = std::string(Base) + "\n  \"rgb scatterDistance\" [ 0.1 0.1 0.1 ] "
+                                                         "\"string subsurface\" \"diffusion\" \"float cavityFade\" [ 2 ]";
+    for (auto [name, material, message] :
+         {std::tuple{"randomwalk", random_walk, "applies to the profile models"},
+          std::tuple{"range", out_of_range, "must lie in [0, 1]"}}) {
+        std::string path = dir + "/" + name + ".pbrt", err = dir + "/" + name + ".txt";
+        std::ofstream(path) << furnace_scene(material);
+        EXPECT_EQ(run_caustica("render " + path + " --spp 1 --quiet -o " + dir + "/out.exr", err), 2) << name;
+        std::string text = read_text(err);
+        // The scene text starts with a newline: the material is on line 9, cavityFade on 10.
+        EXPECT_NE(text.find(std::string(name) + ".pbrt:10:"), std::string::npos) << text;
+        EXPECT_NE(text.find(message), std::string::npos) << text;
     }
 }
 
