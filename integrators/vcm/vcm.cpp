@@ -19,6 +19,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 namespace caustica {
@@ -28,6 +29,7 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
       base_radius_(params.get_one_float("radius", 0)), alpha_(params.get_one_float("alpha", 0.75f)),
       wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
       photon_search_(params.get_one_string("photonsearch", "hashgrid")) {
+    const std::string light_vertices = params.get_one_string("lightvertices", "store");
     const char *name = mode == Mode::VertexConnectionMerging ? "vcm" : "bpm";
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
@@ -39,6 +41,9 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
         throw InputError(params.location("wavelengthgroups"), "\"wavelengthgroups\" must lie in [1, 64]");
     if (photon_search_ != "hashgrid" && photon_search_ != "flann")
         throw InputError(params.location("photonsearch"), "\"photonsearch\" must be \"hashgrid\" or \"flann\"");
+    if (light_vertices != "store" && light_vertices != "retrace")
+        throw InputError(params.location("lightvertices"), "\"lightvertices\" must be \"store\" or \"retrace\"");
+    retrace_light_paths_ = light_vertices == "retrace";
     if (!scene.camera->models_importance())
         throw InputError(scene.integrator_location,
                          std::string(name) + " needs a camera whose importance is modelled (perspective); "
@@ -80,6 +85,44 @@ struct PhotonMap {
     std::unique_ptr<RangeSearch> search;
     std::vector<Vec3f> positions;
     std::vector<Photon> photons;
+};
+
+struct PhotonBuffer;
+
+// Where one pixel's light path left its photons: ranges of the tracing thread's buffer, [0] on
+// surfaces and [1] in media.
+struct PathPhotons {
+    const PhotonBuffer *buffer = nullptr;
+    uint32_t begin[2] = {0, 0}, count[2] = {0, 0};
+};
+
+// The photons of the light paths one thread traced in an iteration, in the order it traced them.
+struct PhotonBuffer {
+    std::vector<Vec3f> positions[2];
+    std::vector<Photon> photons[2];
+
+    void clear() {
+        for (int kind = 0; kind < 2; ++kind) {
+            positions[kind].clear();
+            photons[kind].clear();
+        }
+    }
+    // The photons of one light path's vertices.
+    PathPhotons add(std::span<const LightVertex> path) {
+        PathPhotons added{this};
+        for (int kind = 0; kind < 2; ++kind) added.begin[kind] = uint32_t(photons[kind].size());
+        for (const LightVertex &v : path) {
+            const ScatteringPoint &point = v.point;
+            const int kind = point.in_medium() ? 1 : 0;
+            positions[kind].push_back(point.p);
+            photons[kind].push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm,
+                                           encode_octahedral(point.wo),
+                                           point.in_medium() ? 0u : encode_octahedral(point.ng), v.path_length,
+                                           uint16_t(v.secondary_terminated)});
+        }
+        for (int kind = 0; kind < 2; ++kind) added.count[kind] = uint32_t(photons[kind].size()) - added.begin[kind];
+        return added;
+    }
 };
 
 // The point where a segment of a subpath ends: a surface hit (si, its BSDF, and the media on its
@@ -139,15 +182,20 @@ struct LightPathContext {
     const Iteration &it;
     IterationPixelContext &pixel;
     const VcmWeights &w;
+    // Where the light vertices' BSDFs live: as long as the vertices are kept.
+    ScratchBuffer &bsdf_memory;
+    // Light tracing (the t = 1 strategy) is done once per light path: not when it is traced again
+    // for its connections.
+    bool connect_to_lens;
 };
 
 // Connects a light vertex to a sampled lens point (light tracing, the t = 1 strategy) and
 // splats the weighted contribution where it lands on the film.
 void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const SubpathMis &m,
-                       const SampledWavelengths &lambda) {
+                       const SampledWavelengths &lambda, Vec2f u_lens) {
     const Scene &scene = ctx.it.scene;
     const ScatteringPoint &point = v.point;
-    auto cs = scene.camera->sample_wi(point.p, ctx.pixel.sampler.get_2d(), lambda);
+    auto cs = scene.camera->sample_wi(point.p, u_lens, lambda);
     if (!cs || !(cs->pdf > 0)) return;
     SampledSpectrum f = point.f(cs->wi, TransportMode::Importance);
     if (f.is_black()) return;
@@ -225,7 +273,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
             point = medium_point(ray, segment.t, medium);
         } else {
             if (!hit) break;
-            BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.pixel.iteration_scratch) : BSDF();
+            BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.bsdf_memory) : BSDF();
             if (!bsdf) {
                 // A boundary between media only: the segment continues through it.
                 medium = medium_after(si, ray.d, medium);
@@ -242,7 +290,12 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
             LightVertex v{point, flux * beta, m.d_vcm, m.d_vc, m.d_vm, uint16_t(path_length),
                           lambda.secondary_terminated()};
             store.push_back(v);
-            if (it.use_vc) connect_to_camera(ctx, v, m, lambda);
+            if (it.use_vc) {
+                // Drawn whether or not the lens is joined, so that a light path traced again
+                // follows the same random numbers.
+                const Vec2f u_lens = sampler.get_2d();
+                if (ctx.connect_to_lens) connect_to_camera(ctx, v, m, lambda, u_lens);
+            }
         }
         // A vertex further along could not be part of a path within max_depth.
         if (path_length >= it.max_depth) break;
@@ -615,9 +668,15 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         surface_photons[g].search = create_range_search(photon_search_);
         medium_photons[g].search = create_range_search(photon_search_);
     }
+    // Light vertices are kept through the iteration only for vcm's connections, and not when
+    // they are traced again instead ("lightvertices" "retrace"); otherwise each thread's vector
+    // holds one path at a time.
+    const bool keep_light_vertices = use_vc && !retrace_light_paths_;
     tbb::enumerable_thread_specific<std::vector<LightVertex>> light_vertices;
+    tbb::enumerable_thread_specific<PhotonBuffer> photon_buffers;
     tbb::enumerable_thread_specific<std::vector<uint32_t>> found;
-    std::vector<StoredPath> light_paths(pixel_count);
+    std::vector<StoredPath> light_paths(keep_light_vertices ? pixel_count : 0);
+    std::vector<PathPhotons> path_photons(use_vm ? pixel_count : 0);
     // One light path per pixel per completed iteration: a resumed render counts those of the
     // iterations it continues from.
     light_paths_traced_ = stats.pixel_samples;
@@ -638,15 +697,22 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             it.volume_normalization.push_back(1 / eta_volume);
         }
 
-        // Pass 1: one light subpath per pixel, stored and connected to the lens.
+        // Pass 1: one light subpath per pixel, connected to the lens, its vertices made photons
+        // (and stored, for connections, with "store").
         for (auto &store : light_vertices) store.clear();
+        for (PhotonBuffer &buffer : photon_buffers) buffer.clear();
         bool completed = renderer.for_each_pixel(iteration, kLightPathDimension,
                                                  [&](Vec2i, size_t index, IterationPixelContext &pixel) {
             const int g = groups.group_of_pixel(index);
             std::vector<LightVertex> &store = light_vertices.local();
+            if (!keep_light_vertices) store.clear();
             const size_t begin = store.size();
-            trace_light_path(LightPathContext{it, pixel, it.weights[g]}, groups.wavelengths(g), store);
-            light_paths[index] = StoredPath{&store, uint32_t(begin), uint32_t(store.size() - begin)};
+            ScratchBuffer &bsdf_memory = keep_light_vertices ? pixel.iteration_scratch : pixel.sample_scratch;
+            trace_light_path(LightPathContext{it, pixel, it.weights[g], bsdf_memory, true}, groups.wavelengths(g),
+                             store);
+            if (keep_light_vertices)
+                light_paths[index] = StoredPath{&store, uint32_t(begin), uint32_t(store.size() - begin)};
+            if (use_vm) path_photons[index] = photon_buffers.local().add(std::span(store).subspan(begin));
             ++traced;
         });
         light_paths_traced_ = traced;
@@ -660,38 +726,48 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         for (size_t index = 0; index < pixel_count && use_vm; ++index)
             group_pixels[groups.group_of_pixel(index)].push_back(uint32_t(index));
         tbb::parallel_for(0, groups.count(), [&](int g) {
-            for (PhotonMap *map : {&surface_photons[g], &medium_photons[g]}) {
+            PhotonMap *maps[2] = {&surface_photons[g], &medium_photons[g]};
+            for (PhotonMap *map : maps) {
                 map->positions.clear();
                 map->photons.clear();
             }
             for (uint32_t index : group_pixels[g]) {
-                const StoredPath &path = light_paths[index];
-                for (uint32_t i = 0; i < path.count; ++i) {
-                    const LightVertex &v = (*path.vertices)[path.begin + i];
-                    const ScatteringPoint &point = v.point;
-                    PhotonMap &map = point.in_medium() ? medium_photons[g] : surface_photons[g];
-                    map.positions.push_back(point.p);
-                    map.photons.push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm,
-                                                 encode_octahedral(point.wo),
-                                                 point.in_medium() ? 0u : encode_octahedral(point.ng),
-                                                 v.path_length, uint16_t(v.secondary_terminated)});
+                const PathPhotons &path = path_photons[index];
+                for (int kind = 0; kind < 2; ++kind) {
+                    const auto positions = path.buffer->positions[kind].begin() + path.begin[kind];
+                    const auto photons = path.buffer->photons[kind].begin() + path.begin[kind];
+                    maps[kind]->positions.insert(maps[kind]->positions.end(), positions, positions + path.count[kind]);
+                    maps[kind]->photons.insert(maps[kind]->photons.end(), photons, photons + path.count[kind]);
                 }
             }
-            surface_photons[g].search->build(surface_photons[g].positions, radius);
-            medium_photons[g].search->build(medium_photons[g].positions, radius);
+            for (PhotonMap *map : maps) map->search->build(map->positions, radius);
         });
 
         // Pass 2: one camera subpath per pixel.
         Film &film = *scene.film;
         return renderer.for_each_pixel(iteration, 0, [&](Vec2i pixel, size_t index, IterationPixelContext &ctx) {
             const int g = groups.group_of_pixel(index);
+            StoredPath light_path;
+            if (keep_light_vertices) {
+                light_path = light_paths[index];
+            } else if (use_vc) {
+                // The pixel's light path of pass 1 again, from its own random numbers (its BSDFs
+                // in this sample's memory), then back to the camera path's.
+                std::vector<LightVertex> &retraced = light_vertices.local();
+                retraced.clear();
+                ctx.sampler.start_pixel_sample(pixel, iteration, kLightPathDimension);
+                trace_light_path(LightPathContext{it, ctx, it.weights[g], ctx.sample_scratch, false},
+                                 groups.wavelengths(g), retraced);
+                ctx.sampler.start_pixel_sample(pixel, iteration, 0);
+                light_path = StoredPath{&retraced, 0, uint32_t(retraced.size())};
+            }
             SampledWavelengths lambda = groups.wavelengths(g);
             const SampledWavelengths group_lambda = lambda;
             ctx.sampler.get_1d(); // dimension 0 is the hero wavelength, fixed by the group here
             CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
             SampledSpectrum L(0.f);
             if (auto camera_ray = scene.camera->generate_ray(cs, lambda)) {
-                L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_paths[index], surface_photons[g],
+                L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_path, surface_photons[g],
                                       medium_photons[g], found.local());
                 if (L.has_non_finite()) {
                     ++ctx.non_finite;

@@ -39,7 +39,8 @@ class VCM final : public Integrator {
     // Parameters: "maxdepth" (5), the most scattering events of a path; "radius" (0:
     // default_merge_radius()), the initial merge radius r_0 in scene units;
     // "alpha" (0.75), the radius reduction exponent; "wavelengthgroups" (16), the wavelength
-    // groups per iteration; "photonsearch" ("hashgrid" or "flann"), the range search.
+    // groups per iteration; "photonsearch" ("hashgrid" or "flann"), the range search;
+    // "lightvertices" ("store" or "retrace", see below).
     VCM(Mode mode, const ParameterDictionary &params, const Scene &scene);
     void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                 const ProgressCallback &progress) override;
@@ -52,6 +53,12 @@ class VCM final : public Integrator {
     float alpha_;
     int wavelength_groups_;
     std::string photon_search_;
+    // vcm connects each camera path to the light path traced for its pixel. "store" keeps every
+    // light vertex of the iteration for that (a 160-byte LightVertex plus its BxDF, besides the
+    // 48-byte photon); "retrace" keeps only the photons and traces the pixel's light path again,
+    // from the same random numbers (so the image is the same, bit for bit), just before its
+    // camera path: a fifth of the memory for the time of tracing the light paths twice.
+    bool retrace_light_paths_ = false;
     uint64_t light_paths_traced_ = 0;
 };
 

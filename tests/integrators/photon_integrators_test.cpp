@@ -38,6 +38,53 @@ TEST_P(PhotonIntegrator, OneAndTwoThreadsGiveBitIdenticalImages) {
 
 INSTANTIATE_TEST_SUITE_P(Integrators, PhotonIntegrator, ::testing::Values("sppm", "bpm", "vcm"));
 
+// Writes the transport scene `source` to `path` with its Integrator directive replaced by
+// `integrator` and its stage included from the source tree.
+void write_transport_scene(const std::string &source, const std::string &integrator, const std::string &path) {
+    std::string text = read_text(source);
+    const size_t at = text.find("Integrator \"path\"");
+    ASSERT_NE(at, std::string::npos) << source;
+    text.replace(at, text.find('\n', at) - at, integrator);
+    text.replace(text.find("Include \"stage.pbrt\""), 20,
+                 "Include \"" + std::string(CAUSTICA_SOURCE_DIR) + "/scenes/transport/stage.pbrt\"");
+    std::FILE *f = std::fopen(path.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fwrite(text.data(), 1, text.size(), f);
+    std::fclose(f);
+}
+
+// "lightvertices" "retrace" traces each pixel's light path a second time, from the same random
+// numbers, instead of storing it: the image must be the same, value for value, as with the
+// stored vertices, on surfaces (glass block) and with photons in media (fog block), for vcm
+// (which connects to the vertices) and bpm (which only merges, and stores none either way).
+TEST(PhotonIntegratorParameters, RetracedLightPathsGiveTheStoredImage) {
+    const std::string dir = scratch_dir("photon-retrace");
+    for (const char *name : {"glass-block", "fog-block"})
+        for (const char *integrator : {"vcm", "bpm"}) {
+            const std::string source = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/transport/" + name + ".pbrt";
+            std::string images[2];
+            for (const char *mode : {"store", "retrace"}) {
+                const std::string scene = dir + "/" + mode + ".pbrt", out = dir + "/" + mode + ".exr";
+                write_transport_scene(source,
+                                      std::string("Integrator \"") + integrator +
+                                          "\" \"integer maxdepth\" [ 8 ] \"string lightvertices\" \"" + mode + "\"",
+                                      scene);
+                ASSERT_EQ(run_caustica("render " + scene + " --quiet --spp 3 --seed 7 -o " + out), 0) << mode;
+                images[mode[0] == 'r'] = out;
+            }
+            RgbImage stored = read_rgb(images[0]), retraced = read_rgb(images[1]);
+            ASSERT_EQ(stored.rgb.size(), retraced.rgb.size());
+            size_t differing = 0;
+            double sum = 0;
+            for (size_t i = 0; i < stored.rgb.size(); ++i) {
+                differing += stored.rgb[i] != retraced.rgb[i];
+                sum += stored.rgb[i];
+            }
+            EXPECT_EQ(differing, 0u) << name << " " << integrator;
+            EXPECT_GT(sum, 0) << name << " " << integrator; // not trivially equal
+        }
+}
+
 // Parameters are checked where they are read: an out-of-range value is an error at its location
 // in the scene file (exit status 2, nothing written).
 TEST(PhotonIntegratorParameters, OutOfRangeValuesAreErrorsAtTheirLocation) {
@@ -48,19 +95,11 @@ TEST(PhotonIntegratorParameters, OutOfRangeValuesAreErrorsAtTheirLocation) {
         {"\"bpm\" \"float radius\" [ -1 ]", "radius"},
         {"\"sppm\" \"string photonsearch\" [ \"octree\" ]", "photonsearch"},
         {"\"sppm\" \"integer photonsperiteration\" [ 0 ]", "photonsperiteration"},
+        {"\"vcm\" \"string lightvertices\" [ \"discard\" ]", "lightvertices"},
     };
     for (const auto &c : cases) {
         const std::string scene = dir + "/scene.pbrt";
-        std::string text = read_text(kScene);
-        const size_t at = text.find("Integrator \"path\"");
-        ASSERT_NE(at, std::string::npos);
-        text.replace(at, text.find('\n', at) - at, "Integrator " + c[0]);
-        text.replace(text.find("Include \"stage.pbrt\""), 20,
-                     "Include \"" + std::string(CAUSTICA_SOURCE_DIR) + "/scenes/transport/stage.pbrt\"");
-        std::FILE *f = std::fopen(scene.c_str(), "wb");
-        ASSERT_NE(f, nullptr);
-        std::fwrite(text.data(), 1, text.size(), f);
-        std::fclose(f);
+        write_transport_scene(kScene, "Integrator " + c[0], scene);
         const std::string err = dir + "/err.txt", out = dir + "/out.exr";
         EXPECT_EQ(run_caustica("render " + scene + " --quiet --spp 1 -o " + out, err), 2) << c[0];
         const std::string message = read_text(err);
