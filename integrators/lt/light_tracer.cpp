@@ -4,12 +4,15 @@
 #include "geometry/interaction.h"
 #include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
+#include "integrators/common/profile_subsurface.h"
 #include "integrators/common/splat_scale.h"
 #include "integrators/common/tile_renderer.h"
 #include "integrators/common/transmittance.h"
+#include "materials/disney_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
 
+#include <optional>
 #include <utility>
 
 namespace caustica {
@@ -101,6 +104,33 @@ bool russian_roulette(SampledSpectrum &beta, int depth, Sampler &sampler) {
         beta /= 1 - q;
     }
     return !beta.is_black();
+}
+
+// The rest of a profile BSSRDF event entered at `entry` (profile_subsurface.h): the exit point,
+// joined to the lens through its exit lobe like any diffuse vertex, then a direction sampled
+// from that lobe. The path keeps to the medium it arrived in (a profile solid has no interior
+// medium). False when the path ends.
+bool leave_through_profile(const LightPathContext &ctx, const DisneyMaterial &material,
+                           const SurfaceInteraction &entry, const SampledSpectrum &flux, SampledSpectrum &beta,
+                           Ray &ray, const Medium *&medium, const SampledWavelengths &lambda) {
+    Sampler &sampler = ctx.sample.sampler;
+    std::optional<ProfileExit> exit =
+        sample_profile_exit(ctx.scene, material, entry, lambda, sampler, ctx.sample.scratch, ctx.sample.rays);
+    if (!exit) return false;
+    beta *= exit->weight;
+    if (beta.is_black()) return false;
+    const SurfaceInteraction &si = exit->si;
+    const BSDF &bsdf = exit->bsdf;
+    connect_to_lens(
+        ctx, si.p, flux * beta, lambda,
+        [&](Vec3f wi) { return bsdf.f(si.wo, wi, TransportMode::Importance) * importance_cosine(si, si.wo, wi); },
+        [&](Vec3f p_lens, Vec3f wi) { return std::pair{si.spawn_ray_to(p_lens), medium_after(si, wi, medium)}; });
+    auto bs = bsdf.sample_f(si.wo, 0, sampler.get_2d(), TransportMode::Importance);
+    if (!bs) return false;
+    beta *= bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
+    medium = medium_after(si, bs->wi, medium);
+    ray = si.spawn_ray(bs->wi);
+    return true;
 }
 
 // One light path for the sampler's current (pixel, iteration).
@@ -198,6 +228,11 @@ void trace_light_path(const LightPathContext &ctx) {
             for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
         }
         beta *= bs->f * (importance_cosine(si, wo, bs->wi) / bs->pdf);
+        if (const DisneyMaterial *material = profile_entry(si, *bs)) {
+            if (!leave_through_profile(ctx, *material, si, flux, beta, ray, medium, lambda)) break;
+            if (!russian_roulette(beta, depth, sampler)) break;
+            continue;
+        }
         if (bs->is_transmission() && si.material->has_interior_absorption())
             absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
         medium = medium_after(si, bs->wi, medium);

@@ -4,7 +4,7 @@
 #include "geometry/interaction.h"
 #include "integrators/common/light_sampling.h"
 #include "integrators/common/path_segment.h"
-#include "integrators/common/subsurface_probe.h"
+#include "integrators/common/profile_subsurface.h"
 #include "integrators/common/tile_renderer.h"
 #include "materials/disney_material.h"
 #include "media/medium_interface.h"
@@ -43,38 +43,20 @@ bool russian_roulette(PathState &st, int depth, Sampler &sampler) {
     return !st.beta.is_black();
 }
 
-// The material whose profile subsurface (diffusion or dipole) a BSDF sample enters, or null.
-// DisneyBxDF samples that entry from outside as its only diffuse transmission (disney_bxdf.h);
-// a random walk's crossing looks the same but leads into the interior medium.
-const DisneyMaterial *profile_entry(const SurfaceInteraction &si, const BSDFSample &bs) {
-    if (!bs.is_transmission() || !is_diffuse(bs.flags) || bs.is_specular()) return nullptr;
-    if (!si.material->has_subsurface() || si.material->interior_medium() || dot(si.wo, si.shading.n) <= 0)
-        return nullptr;
-    auto *disney = dynamic_cast<const DisneyMaterial *>(si.material);
-    return disney && disney->has_profile_subsurface() ? disney : nullptr;
-}
-
-// The rest of a profile BSSRDF event after its entry at `entry` (pbrt-v3's separable BSSRDF,
-// section 15.4): an exit point sampled by probe rays against the profile, whose weight
-// R(r) / pdf carries the albedo, then the exit lobe there, with next-event estimation and a
-// sampled direction, as at any diffuse surface. Entry and exit are one scattering event for
-// maxdepth, as the BRDF they converge to is. False when the path ends.
+// The rest of a profile BSSRDF event after its entry at `entry` (profile_subsurface.h): the
+// exit point, whose weight R(r) / pdf carries the albedo, then the exit lobe there, with
+// next-event estimation and a sampled direction, as at any diffuse surface. False when the path
+// ends.
 bool leave_through_profile(const Scene &scene, const DisneyMaterial &material, const SurfaceInteraction &entry,
                            PathState &st, Ray &ray, SampledWavelengths &lambda, Sampler &sampler,
                            ScratchBuffer &scratch, uint64_t &rays) {
-    thread_local SubsurfaceProbeSampler probe;
-    DisneySubsurfaceProfile profile = material.subsurface_profile(entry, lambda);
-    float u_strategy = sampler.get_1d();
-    Vec2f u_plane = sampler.get_2d();
-    ++rays;
-    std::optional<SubsurfaceExit> exit = probe.sample(entry, as_profile(profile), u_strategy, u_plane, scene);
+    std::optional<ProfileExit> exit = sample_profile_exit(scene, material, entry, lambda, sampler, scratch, rays);
     if (!exit) return false;
-    st.beta *= exit->weight * material.cavity_fade(entry.n, exit->si.n);
+    st.beta *= exit->weight;
     if (st.beta.is_black()) return false;
 
-    SurfaceInteraction &si = exit->si;
-    si.wo = -si.n; // the light arrives through the interior
-    BSDF bsdf = material.subsurface_exit_bsdf(si, scratch);
+    const SurfaceInteraction &si = exit->si;
+    const BSDF &bsdf = exit->bsdf;
     const LightSampleContext ctx{si.p, si.n, si.shading.n};
     st.L += st.beta * sample_direct_lighting(scene, si, bsdf, ctx, lambda, sampler, rays, TransportMode::Radiance,
                                              DirectLighting::WeightedAgainstBsdfSampling, st.medium);

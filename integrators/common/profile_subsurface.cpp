@@ -1,0 +1,33 @@
+#include "integrators/common/profile_subsurface.h"
+
+#include "integrators/common/subsurface_probe.h"
+#include "materials/disney_material.h"
+#include "sampler/sampler.h"
+
+namespace caustica {
+
+const DisneyMaterial *profile_entry(const SurfaceInteraction &si, const BSDFSample &bs) {
+    if (!bs.is_transmission() || !is_diffuse(bs.flags) || bs.is_specular()) return nullptr;
+    if (!si.material->has_subsurface() || si.material->interior_medium() || dot(si.wo, si.shading.n) <= 0)
+        return nullptr;
+    auto *disney = dynamic_cast<const DisneyMaterial *>(si.material);
+    return disney && disney->has_profile_subsurface() ? disney : nullptr;
+}
+
+std::optional<ProfileExit> sample_profile_exit(const Scene &scene, const DisneyMaterial &material,
+                                               const SurfaceInteraction &entry, const SampledWavelengths &lambda,
+                                               Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
+    thread_local SubsurfaceProbeSampler probe;
+    DisneySubsurfaceProfile profile = material.subsurface_profile(entry, lambda);
+    const float u_strategy = sampler.get_1d();
+    const Vec2f u_plane = sampler.get_2d();
+    ++rays;
+    std::optional<SubsurfaceExit> exit = probe.sample(entry, as_profile(profile), u_strategy, u_plane, scene);
+    if (!exit) return {};
+    ProfileExit result{exit->si, BSDF(), exit->weight * material.cavity_fade(entry.n, exit->si.n)};
+    result.si.wo = -result.si.n;
+    result.bsdf = material.subsurface_exit_bsdf(result.si, scratch);
+    return result;
+}
+
+} // namespace caustica

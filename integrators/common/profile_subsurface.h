@@ -1,0 +1,47 @@
+// Profile subsurface scattering (the Disney material's normalized diffusion and dipole models: a
+// separable BSSRDF, pbrt-v3 section 15.4) as a path meets it, from either end. Light that a BSDF
+// sample sends into such a solid from outside leaves it at a point sampled by probe rays against
+// the profile (subsurface_probe.h) and continues through the exit lobe there.
+//
+// The BSSRDF w (1 - F_in / 2) R(r) (1 - F_out / 2) / pi (docs/disney.md) is symmetric in its two
+// ends, so a camera path (pt) and a light path (lt) use the same pieces in the same order: the
+// entry event (DisneyBxDF's discrete crossing, f |cos| / pdf carrying w (1 - F / 2) of the
+// direction the path came from), the profile's weight R / pdf at the sampled exit, and the exit
+// lobe towards the direction the path leaves in. Entry and exit are one scattering event for
+// maxdepth, as the BRDF they converge to is.
+#pragma once
+
+#include "geometry/interaction.h"
+#include "materials/bsdf.h"
+#include "spectral/sampled_spectrum.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace caustica {
+
+class DisneyMaterial;
+class Sampler;
+class ScratchBuffer;
+class Scene;
+class SampledWavelengths;
+
+// The material whose profile subsurface the BSDF sample bs, taken at si, enters, or null.
+// DisneyBxDF samples that entry from outside as its only diffuse transmission (disney_bxdf.h);
+// a random walk's crossing looks the same but leads into the interior medium.
+const DisneyMaterial *profile_entry(const SurfaceInteraction &si, const BSDFSample &bs);
+
+struct ProfileExit {
+    SurfaceInteraction si;  // the exit point; its wo is -n, as the light arrives through the interior
+    BSDF bsdf;              // the exit lobe there
+    SampledSpectrum weight; // R(r) / pdf of the exit, times the material's cavity fade
+};
+
+// Samples where the light entering at `entry` leaves (three sampler dimensions, one probe ray
+// counted in `rays`); empty when the probe finds no exit (a zero-valued sample). The exit lobe's
+// BxDF lives in `scratch`.
+std::optional<ProfileExit> sample_profile_exit(const Scene &scene, const DisneyMaterial &material,
+                                               const SurfaceInteraction &entry, const SampledWavelengths &lambda,
+                                               Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays);
+
+} // namespace caustica
