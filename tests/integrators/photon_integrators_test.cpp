@@ -16,6 +16,20 @@ const std::string kScene = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/transport
 
 class PhotonIntegrator : public ::testing::TestWithParam<const char *> {};
 
+// Two renders that must agree value for value; the first must not be black (which would make
+// the comparison trivial).
+void expect_identical(const RgbImage &a, const RgbImage &b, const std::string &what) {
+    ASSERT_EQ(a.rgb.size(), b.rgb.size()) << what;
+    size_t differing = 0;
+    double sum = 0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) {
+        differing += a.rgb[i] != b.rgb[i];
+        sum += a.rgb[i];
+    }
+    EXPECT_EQ(differing, 0u) << what;
+    EXPECT_GT(sum, 0) << what;
+}
+
 TEST_P(PhotonIntegrator, OneAndTwoThreadsGiveBitIdenticalImages) {
     const std::string dir = scratch_dir(std::string("photon-threads-") + GetParam());
     for (int threads : {1, 2}) {
@@ -24,16 +38,7 @@ TEST_P(PhotonIntegrator, OneAndTwoThreadsGiveBitIdenticalImages) {
                                " --spp 4 --seed 5 --threads " + std::to_string(threads) + " -o " + out),
                   0);
     }
-    RgbImage one = read_rgb(dir + "/t1.exr"), two = read_rgb(dir + "/t2.exr");
-    ASSERT_EQ(one.rgb.size(), two.rgb.size());
-    size_t differing = 0;
-    double sum = 0;
-    for (size_t i = 0; i < one.rgb.size(); ++i) {
-        differing += one.rgb[i] != two.rgb[i];
-        sum += one.rgb[i];
-    }
-    EXPECT_EQ(differing, 0u);
-    EXPECT_GT(sum, 0); // the images are not trivially equal
+    expect_identical(read_rgb(dir + "/t1.exr"), read_rgb(dir + "/t2.exr"), GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, PhotonIntegrator, ::testing::Values("sppm", "bpm", "vcm"));
@@ -72,16 +77,7 @@ TEST(PhotonIntegratorParameters, RetracedLightPathsGiveTheStoredImage) {
                 ASSERT_EQ(run_caustica("render " + scene + " --quiet --spp 3 --seed 7 -o " + out), 0) << mode;
                 images[mode[0] == 'r'] = out;
             }
-            RgbImage stored = read_rgb(images[0]), retraced = read_rgb(images[1]);
-            ASSERT_EQ(stored.rgb.size(), retraced.rgb.size());
-            size_t differing = 0;
-            double sum = 0;
-            for (size_t i = 0; i < stored.rgb.size(); ++i) {
-                differing += stored.rgb[i] != retraced.rgb[i];
-                sum += stored.rgb[i];
-            }
-            EXPECT_EQ(differing, 0u) << name << " " << integrator;
-            EXPECT_GT(sum, 0) << name << " " << integrator; // not trivially equal
+            expect_identical(read_rgb(images[0]), read_rgb(images[1]), std::string(name) + " " + integrator);
         }
 }
 
