@@ -5,9 +5,11 @@
 #include "integrators/bdpt/mis_weight.h"
 #include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
+#include "integrators/common/profile_subsurface.h"
 #include "integrators/common/splat_scale.h"
 #include "integrators/common/tile_renderer.h"
 #include "integrators/common/transmittance.h"
+#include "materials/disney_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
 
@@ -38,6 +40,54 @@ struct SubpathContext {
     PixelSampleContext &sample;
 };
 
+// The cosine that goes with a sampled direction wi at si: |wi . ns| for radiance, the
+// adjoint-corrected importance_cosine for importance.
+float subpath_cosine(TransportMode mode, const SurfaceInteraction &si, Vec3f wo, Vec3f wi) {
+    return mode == TransportMode::Radiance ? abs_dot(wi, si.shading.n) : importance_cosine(si, wo, wi);
+}
+
+// The subpath's last vertex, path[count - 1], entered a profile solid by the sample bs: its
+// predecessor's reverse density becomes the exit lobe's there (a walk from the other end would
+// leave the solid at this point), then the exit is sampled (profile_subsurface.h) and appended
+// as a vertex after a jump, and unless that vertex is the last one counted, a direction is
+// sampled from its exit lobe for the walk to follow (ray, pdf_fwd, medium). False when the
+// subpath ends before the exit.
+bool jump_through_profile(const SubpathContext &ctx, const DisneyMaterial &material, const BSDFSample &bs,
+                          TransportMode mode, bool last, PathVertex *path, int &count, SampledSpectrum &beta,
+                          float &pdf_fwd, Ray &ray, const Medium *&medium) {
+    Sampler &sampler = ctx.sample.sampler;
+    PathVertex &entry = path[count - 1];
+    const SurfaceInteraction &si = entry.si;
+    beta *= bs.f * (subpath_cosine(mode, si, si.wo, bs.wi) / bs.pdf);
+    const float exit_pdf_here =
+        material.subsurface_exit_bsdf(si, ctx.sample.scratch).pdf(-si.n, si.wo, TransportMode::Radiance);
+    path[count - 2].pdf_rev = entry.convert_density(exit_pdf_here, path[count - 2]);
+    entry.pdf_rev = 1; // the reverse jump (PathVertex::after_jump)
+    std::optional<ProfileExit> exit =
+        sample_profile_exit(ctx.scene, material, si, ctx.lambda, sampler, ctx.sample.scratch, ctx.sample.rays);
+    if (!exit) return false;
+    beta *= exit->weight;
+    if (beta.is_black()) return false;
+    PathVertex &v = start_vertex(path[count++]);
+    v.type = PathVertexType::Surface;
+    v.after_jump = true;
+    v.jumps = entry.jumps + 1;
+    v.si = exit->si;
+    v.bsdf = exit->bsdf;
+    v.medium = medium;
+    v.beta = beta;
+    v.pdf_fwd = 1; // the jump
+    if (last) return true;
+    // The exit lobe's direction; the entry's reverse density stays the jump's.
+    auto next = v.bsdf.sample_f(v.si.wo, 0, sampler.get_2d(), mode);
+    if (!next) return false;
+    pdf_fwd = next->pdf;
+    beta *= next->f * (subpath_cosine(mode, v.si, v.si.wo, next->wi) / next->pdf);
+    medium = medium_after(v.si, next->wi, medium);
+    ray = v.si.spawn_ray(next->wi);
+    return !beta.is_black();
+}
+
 // Extends the subpath whose last vertex is path[count - 1] by following ray, whose direction
 // was sampled there with solid-angle density pdf_fwd, until max_count vertices exist; returns the
 // new count. beta is the throughput carried by the ray, medium the one it starts in. Camera
@@ -48,7 +98,9 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
     const Scene &scene = ctx.scene;
     Sampler &sampler = ctx.sample.sampler;
     const Material *absorbing_interior = nullptr;
-    while (count < max_count) {
+    // Vertices that count towards max_count: a jump's exit shares its entry's (see after_jump).
+    auto counted = [&] { return count - path[count - 1].jumps; };
+    while (counted() < max_count) {
         SurfaceInteraction si;
         ++ctx.sample.rays;
         bool hit = scene.intersect(ray, &si);
@@ -62,12 +114,13 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
             // throughput is unchanged, and by its symmetry the reverse density is the same.
             PathVertex &v = start_vertex(path[count++]);
             v.type = PathVertexType::Medium;
+            v.jumps = prev.jumps;
             v.medium = medium;
             v.si.wo = -normalize(ray.d);
             v.si.p = ray.o - v.si.wo * segment.t;
             v.beta = beta;
             v.pdf_fwd = prev.convert_density(pdf_fwd, v);
-            if (count == max_count) break;
+            if (counted() == max_count) break;
             PhaseSample ps = medium->phase().sample_p(v.si.wo, sampler.get_2d());
             if (!(ps.p > 0)) break;
             pdf_fwd = ps.p;
@@ -79,6 +132,7 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
             if (mode == TransportMode::Radiance && !scene.infinite_lights.empty()) {
                 PathVertex &v = start_vertex(path[count++]);
                 v.type = PathVertexType::Light;
+                v.jumps = prev.jumps;
                 v.at_infinity = true;
                 v.si.p = ray.o + normalize(ray.d);
                 v.beta = beta;
@@ -100,24 +154,32 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
         }
         PathVertex &v = start_vertex(path[count++]);
         v.type = PathVertexType::Surface;
+        v.jumps = prev.jumps;
         v.si = si;
         v.bsdf = bsdf;
         v.medium = medium;
         v.beta = beta;
         v.pdf_fwd = prev.convert_density(pdf_fwd, v);
-        if (count == max_count) break;
+        // The last counted vertex still enters a profile solid if its sample says so: the exit
+        // is part of the same scattering event.
+        const bool last = counted() == max_count;
+        if (last && !si.material->has_profile_subsurface()) break;
 
         float u = sampler.get_1d();
         auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), mode);
         if (!bs) break;
+        if (const DisneyMaterial *profile = profile_entry(si, *bs)) {
+            if (!jump_through_profile(ctx, *profile, *bs, mode, last, path, count, beta, pdf_fwd, ray, medium) || last)
+                break;
+            continue;
+        }
+        if (last) break;
         // Hero-wavelength sampling (Wilkie et al. 2014): a wavelength-dependent direction is
         // valid for the hero alone. The sample's other contributions lose their secondary
         // lanes when they are made (see trace_sample).
         if (bs->dispersive && !ctx.lambda.secondary_terminated()) ctx.lambda.terminate_secondary();
         pdf_fwd = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, mode) : bs->pdf;
-        const float cosine = mode == TransportMode::Radiance ? abs_dot(bs->wi, si.shading.n)
-                                                             : importance_cosine(si, si.wo, bs->wi);
-        beta *= bs->f * (cosine / bs->pdf);
+        beta *= bs->f * (subpath_cosine(mode, si, si.wo, bs->wi) / bs->pdf);
         // Density of the reverse step, from wi back to wo, with the adjoint transport mode.
         const TransportMode reverse = mode == TransportMode::Radiance ? TransportMode::Importance
                                                                       : TransportMode::Radiance;
@@ -218,8 +280,11 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
     PathVertex sampled;
     SampledSpectrum L(0.f);
     if (s == 0) {
+        // An exit from a profile solid was not reached along a ray: its emission, if any, is
+        // the subpath's hit on the entry's surface, not counted again here (as in the path
+        // tracer).
         const PathVertex &pt = camera_vertices[t - 1];
-        if (pt.is_light()) L = pt.Le(scene, camera_vertices[t - 2], ctx.lambda) * pt.beta;
+        if (pt.is_light() && !pt.after_jump) L = pt.Le(scene, camera_vertices[t - 2], ctx.lambda) * pt.beta;
     } else if (t == 1) {
         // Join the light subpath's end to a sampled lens point; the result lands on the film
         // where that direction images.
@@ -320,14 +385,15 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         if (camera_ray) {
             SubpathContext ctx{scene, lambda, sample};
             // A path of depth d (bounces) has d + 2 vertices: the camera subpath may need all of
-            // them (s = 0), the light subpath all but the lens point (t = 1).
-            PathVertex *camera_vertices = new_vertices(sample.scratch, max_depth + 2);
-            PathVertex *light_vertices = new_vertices(sample.scratch, max_depth + 1);
+            // them (s = 0), the light subpath all but the lens point (t = 1); each subsurface
+            // jump adds one that is not a bounce (PathVertex::after_jump), at most one per bounce.
+            PathVertex *camera_vertices = new_vertices(sample.scratch, 2 * (max_depth + 2));
+            PathVertex *light_vertices = new_vertices(sample.scratch, 2 * (max_depth + 1));
             const int n_camera = camera_subpath(ctx, *camera_ray, camera_vertices, max_depth + 2);
             const int n_light = light_subpath(ctx, light_vertices, max_depth + 1);
             for (int t = 1; t <= n_camera; ++t)
                 for (int s = 0; s <= n_light; ++s) {
-                    const int depth = s + t - 2;
+                    const int depth = s + t - 2 - camera_vertices[t - 1].jumps - (s > 0 ? light_vertices[s - 1].jumps : 0);
                     if (depth < 0 || depth > max_depth) continue;
                     Connection c = connect(ctx, light_vertices, camera_vertices, s, t);
                     if (c.L.is_black()) continue;

@@ -69,14 +69,16 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
     // Walking from the connection towards the camera, r_i is the ratio of the density of the
     // strategy that has the light subpath reach camera vertex i to that of this strategy
     // (Veach 1997, eq. 10.9), squared for the power heuristic. A strategy is counted only if
-    // it can exist: no connection at a specular vertex, and none to the lens from a vertex at
-    // infinity (a direction cannot be joined to a lens point).
+    // it can exist: no connection at a specular vertex, none to the lens from a vertex at
+    // infinity (a direction cannot be joined to a lens point), and none across a subsurface
+    // jump (PathVertex::after_jump).
     float sum_ratios = 0;
     float ratio = 1;
     for (int i = t - 1; i > 0; --i) {
         ratio *= sqr(remap0(camera_vertices[i].pdf_rev) / remap0(camera_vertices[i].pdf_fwd));
         bool lens_connection_impossible = i == 1 && camera_vertices[1].at_infinity;
-        if (!camera_vertices[i].delta && !camera_vertices[i - 1].delta && !lens_connection_impossible)
+        if (!camera_vertices[i].delta && !camera_vertices[i - 1].delta && !lens_connection_impossible &&
+            !camera_vertices[i].after_jump)
             sum_ratios += ratio;
     }
     // And towards the light: the camera subpath reaching light vertex i. Reaching the light
@@ -85,7 +87,7 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
     for (int i = s - 1; i >= 0; --i) {
         ratio *= sqr(remap0(light_vertices[i].pdf_rev) / remap0(light_vertices[i].pdf_fwd));
         bool delta_before = i > 0 ? light_vertices[i - 1].delta : light_vertices[0].is_delta_light();
-        if (!light_vertices[i].delta && !delta_before) sum_ratios += ratio;
+        if (!light_vertices[i].delta && !delta_before && !light_vertices[i].after_jump) sum_ratios += ratio;
     }
     return 1 / (1 + sum_ratios);
 }

@@ -58,8 +58,11 @@ float PathVertex::pdf(const Scene &scene, const PathVertex *prev, const PathVert
         float pdf_pos;
         scene.camera->pdf_we(Ray{p(), wn, Infinity}, &pdf_pos, &pdf);
     } else {
+        // Back across a jump: the reverse jump's density (see after_jump).
+        if (after_jump && &next == this - 1) return 1;
         if (!prev) return 0;
-        Vec3f wp = prev->p() - p();
+        // Arrived through a jump: the light comes from inside (si.wo), not from prev's position.
+        Vec3f wp = after_jump && prev == this - 1 ? si.wo : prev->p() - p();
         if (length_squared(wp) == 0) return 0;
         pdf = type == PathVertexType::Medium ? medium->phase().pdf(normalize(wp), wn)
                                              : bsdf.pdf(normalize(wp), wn);

@@ -52,6 +52,16 @@ struct PathVertex {
     // strategies that would need to connect it have zero density.
     bool delta = false;
     bool at_infinity = false;     // an environment or distant light vertex (see above)
+    // Profile subsurface (profile_subsurface.h): the vertex is where the subpath left a profile
+    // solid that it entered at its predecessor. That edge is a jump through the solid, not a
+    // ray: no strategy can join its two ends by a connection, and the densities of the jump
+    // are taken as 1 in both directions (a fixed pair keeps the MIS weights a partition of
+    // unity, and cancels from every strategy that counts, as each holds both ends or neither).
+    // A subpath's vertices are stored one after another, so the predecessor is this - 1.
+    bool after_jump = false;
+    // Jumps on the subpath up to this vertex: entry and exit are one scattering event, as in
+    // the path tracer, so a strategy's path depth leaves them out.
+    uint16_t jumps = 0;
     // Density of generating this vertex from its predecessor on its own subpath (pdf_fwd) and
     // from its successor, i.e. by the other subpath's sampling (pdf_rev); area measure.
     float pdf_fwd = 0, pdf_rev = 0;
