@@ -279,8 +279,8 @@ TEST(SubsurfaceRender, CavityFadeIsCheckedWhereItIsRead) {
 // with 2e-4: a false failure over one integrator's comparisons has probability about 1%). The
 // image means' standard errors are 0.1-0.25% (so the first bound is 1-1.5%): scaling the light
 // tracer's exit lobe by 42/41, the 2.4% an exit lobe renormalised as pbrt-v3's would add, fails
-// (red and green means, both models); dropping its cosine or the profile weight fails by far;
-// exits placed at the wrong distance move light between the blocks.
+// (red and green means, both models); dropping the profile weight fails by far; exits placed
+// at the wrong distance move light between the blocks.
 TEST(SubsurfaceRender, LightPathIntegratorsAgreeWithThePathTracerOnProfiles) {
     std::string dir = scratch_dir("subsurface-light-paths");
     for (const char *model : {"diffusion", "dipole"}) {
