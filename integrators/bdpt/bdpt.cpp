@@ -59,8 +59,7 @@ bool jump_through_profile(const SubpathContext &ctx, const DisneyMaterial &mater
     PathVertex &entry = path[count - 1];
     const SurfaceInteraction &si = entry.si;
     beta *= bs.f * (subpath_cosine(mode, si, si.wo, bs.wi) / bs.pdf);
-    const float exit_pdf_here =
-        material.subsurface_exit_bsdf(si, ctx.sample.scratch).pdf(-si.n, si.wo, TransportMode::Radiance);
+    const float exit_pdf_here = profile_exit_density(material, si, ctx.sample.scratch);
     path[count - 2].pdf_rev = entry.convert_density(exit_pdf_here, path[count - 2]);
     entry.pdf_rev = 1; // the reverse jump (PathVertex::after_jump)
     std::optional<ProfileExit> exit =

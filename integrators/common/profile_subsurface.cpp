@@ -30,4 +30,8 @@ std::optional<ProfileExit> sample_profile_exit(const Scene &scene, const DisneyM
     return result;
 }
 
+float profile_exit_density(const DisneyMaterial &material, const SurfaceInteraction &entry, ScratchBuffer &scratch) {
+    return material.subsurface_exit_bsdf(entry, scratch).pdf(-entry.n, entry.wo, TransportMode::Radiance);
+}
+
 } // namespace caustica

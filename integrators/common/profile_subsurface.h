@@ -45,4 +45,9 @@ std::optional<ProfileExit> sample_profile_exit(const Scene &scene, const DisneyM
                                                const SurfaceInteraction &entry, const SampledWavelengths &lambda,
                                                Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays);
 
+// The solid-angle density with which the exit lobe at `entry` would sample entry.wo: what a walk
+// from the other end, jumping to this point, would take to leave it towards where this path came
+// from. Bidirectional MIS needs it as the reverse density at an entry.
+float profile_exit_density(const DisneyMaterial &material, const SurfaceInteraction &entry, ScratchBuffer &scratch);
+
 } // namespace caustica

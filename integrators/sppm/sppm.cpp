@@ -9,7 +9,9 @@
 #include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/photon_side.h"
+#include "integrators/common/profile_subsurface.h"
 #include "integrators/common/wavelength_groups.h"
+#include "materials/disney_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
 #include "spatial/range_search.h"
@@ -61,10 +63,12 @@ struct VisiblePoint {
     SampledWavelengths lambda; // the path's wavelengths (terminated if it crossed dispersion)
 };
 
-// A pixel's camera path this iteration (its estimate is in SPPM::estimates_).
+// A pixel's camera path this iteration (its estimate is in SPPM::estimates_). A visible point
+// on a profile-subsurface solid (diffusion, dipole) has a second one where the light that the
+// camera sees there entered the solid: see trace_camera_path.
 struct PixelState {
     RGB direct;
-    VisiblePoint vp;
+    VisiblePoint vp, subsurface_vp;
 };
 
 struct StoredPhoton {
@@ -74,6 +78,31 @@ struct StoredPhoton {
     uint16_t depth;            // scattering vertices on the light path before this one
     bool secondary_terminated;
 };
+
+// The second visible point of a camera path that reached the profile-subsurface solid at si
+// with throughput beta (see trace_camera_path): where one BSDF sample, if it enters the solid,
+// leads through the profile, with its direct lighting added to L. Left empty otherwise.
+void find_subsurface_visible_point(const Scene &scene, const SurfaceInteraction &si, const BSDF &bsdf, int depth,
+                                   SampledSpectrum beta, const SampledWavelengths &lambda, const Medium *medium,
+                                   IterationPixelContext &ctx, SampledSpectrum &L, VisiblePoint &subsurface_vp) {
+    Sampler &sampler = ctx.sampler;
+    const float u = sampler.get_1d();
+    auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
+    if (!bs) return;
+    const DisneyMaterial *material = profile_entry(si, *bs);
+    if (!material) return;
+    std::optional<ProfileExit> exit =
+        sample_profile_exit(scene, *material, si, lambda, sampler, ctx.iteration_scratch, ctx.rays);
+    if (!exit) return;
+    beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf) * exit->weight;
+    if (beta.is_black()) return;
+    const SurfaceInteraction &at = exit->si;
+    // A profile solid has no interior medium: the exit lies in the medium the entry does.
+    L += beta * sample_direct_lighting(scene, at, exit->bsdf, LightSampleContext{at.p, at.n, at.shading.n}, lambda,
+                                       sampler, ctx.rays, TransportMode::Radiance, DirectLighting::LightSamplingOnly,
+                                       medium);
+    subsurface_vp = VisiblePoint{at.p, at.n, at.shading.n, at.wo, depth, exit->bsdf, beta, lambda};
+}
 
 // Direct lighting and the visible point of one pixel's camera path.
 // lambda is terminated in place if the path crosses dispersion: L is in its measure.
@@ -91,9 +120,19 @@ struct StoredPhoton {
 //     only after at least one scattering event, on a surface or in a medium (trace_photon).
 // Photons are never deposited in media: the camera path resolves the media between the camera
 // and its visible point itself, and the light paths those beyond it.
+//
+// Profile subsurface (profile_subsurface.h). The BSDF at a visible point on such a solid leaves
+// the subsurface entry out of f (disney_bxdf.h), so its photons give the surface reflection
+// alone. The light scattered below the surface is found from the camera's end: one BSDF sample
+// there, when it is the entry, jumps through the profile to an exit point, which becomes the
+// pixel's second visible point, with the exit lobe as its BSDF and next-event estimation of
+// its own. (The sample's f |cos| / pdf includes the chance of choosing the entry, so the
+// estimate is unbiased though it is taken only that often.) Photons jump through profiles too
+// but are not deposited at exits: the light arriving at an exit through the interior is
+// exactly what the camera's jump gathers at the other end.
 void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectrum beta,
                        SampledWavelengths &lambda, IterationPixelContext &ctx, SampledSpectrum &L,
-                       VisiblePoint &vp) {
+                       VisiblePoint &vp, VisiblePoint &subsurface_vp) {
     bool specular_bounce = false;
     bool medium_scatter = false;   // the last scattering event was in a medium
     float bsdf_pdf = 0;
@@ -158,6 +197,8 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
                                                medium);
         if (visible_point) {
             vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, depth, bsdf, beta, lambda};
+            if (si.material->has_profile_subsurface())
+                find_subsurface_visible_point(scene, si, bsdf, depth, beta, lambda, medium, ctx, L, subsurface_vp);
             return;
         }
         float u = sampler.get_1d();
@@ -238,14 +279,28 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
             for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
         }
         SampledSpectrum next = beta * bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
+        // Where the photon leaves the surface, and in which direction: through a profile solid
+        // (see trace_camera_path), at the exit the profile samples, by its exit lobe.
+        const SurfaceInteraction *leaving = &si;
+        Vec3f wi = bs->wi;
+        std::optional<ProfileExit> exit;
+        if (const DisneyMaterial *material = profile_entry(si, *bs)) {
+            exit = sample_profile_exit(scene, *material, si, lambda, sampler, ctx.sample_scratch, ctx.rays);
+            if (!exit) return;
+            auto exit_sample = exit->bsdf.sample_f(exit->si.wo, 0, sampler.get_2d(), TransportMode::Importance);
+            if (!exit_sample) return;
+            leaving = &exit->si;
+            wi = exit_sample->wi;
+            next *= exit->weight * exit_sample->f * (importance_cosine(*leaving, leaving->wo, wi) / exit_sample->pdf);
+        } else if (bs->is_transmission() && si.material->has_interior_absorption()) {
+            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+        }
         // Russian roulette keeps the photons' power roughly constant (pbrt-v4 15.4.2).
         float q = std::max(0.f, 1 - next.max_value() / beta.max_value());
         if (sampler.get_1d() < q) return;
         beta = next / (1 - q);
-        if (bs->is_transmission() && si.material->has_interior_absorption())
-            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-        medium = medium_after(si, bs->wi, medium);
-        ray = si.spawn_ray(bs->wi);
+        medium = medium_after(*leaving, wi, medium);
+        ray = leaving->spawn_ray(wi);
         if (beta.is_black()) return;
     }
 }
@@ -290,11 +345,11 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 SampledWavelengths lambda = groups.wavelengths(groups.group_of_pixel(index));
                 ctx.sampler.get_1d(); // the hero wavelength is the group's
                 CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
-                state.vp = VisiblePoint{};
+                state.vp = state.subsurface_vp = VisiblePoint{};
                 SampledSpectrum L(0.f);
                 if (auto camera_ray = scene.camera->generate_ray(cs, lambda))
                     trace_camera_path(scene, max_depth_, camera_ray->ray, camera_ray->weight, lambda, ctx, L,
-                                      state.vp);
+                                      state.vp, state.subsurface_vp);
                 if (L.has_non_finite()) {
                     ++ctx.non_finite;
                     L = SampledSpectrum(0.f);
@@ -353,25 +408,19 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             // Gather pass: each visible point's photons, then the progressive update. It traces
             // no rays and is not interrupted, so that every pixel's statistics describe the same
             // number of completed iterations.
-            tbb::parallel_for(size_t(0), pixels.size(), [&](size_t index) {
-                const PixelState &state = pixels[index];
-                PixelEstimate &estimate = estimates_[index];
-                estimate.direct_sum += state.direct;
-                const VisiblePoint &vp = state.vp;
-                if (!vp.bsdf) return;
-                const int g = groups.group_of_pixel(index);
+            // The sensor value of the photons of group g within radius of vp; gathered counts them.
+            auto gather = [&](const VisiblePoint &vp, int g, float radius, int &gathered) -> RGB {
                 std::vector<uint32_t> &near = found.local();
-                searches[g]->find_within(vp.p, estimate.radius, near);
-                if (near.empty()) return;
+                searches[g]->find_within(vp.p, radius, near);
                 SampledSpectrum phi(0.f);
-                int gathered = 0;
+                int count = 0;
                 for (uint32_t i : near) {
                     const StoredPhoton &photon = group_photons[g][i];
                     // "maxdepth" bounds the scattering vertices of the whole path, as for the
                     // other integrators (pbrt-v4 bounds each subpath separately instead).
                     if (photon.depth + 1 + vp.depth > max_depth_) continue;
                     if (!same_surface(decode_octahedral(photon.normal), vp.ng)) continue;
-                    ++gathered;
+                    ++count;
                     const Vec3f wi = decode_octahedral(photon.wi);
                     const float cos_ng = abs_dot(wi, vp.ng);
                     if (cos_ng == 0) continue;
@@ -389,11 +438,24 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                     phi += contribution;
                 }
                 SampledSpectrum flux = vp.beta * phi;
-                if (flux.has_non_finite()) return;
+                if (flux.has_non_finite()) return RGB{};
+                gathered += count;
                 // All photons of the iteration over the group's: the final normalisation divides
                 // by the total photon count.
                 const float group_scale = float(photon_count) / float(groups.light_path_count(g));
-                RGB phi_rgb = film.sensor_value(flux, vp.lambda) * group_scale;
+                return film.sensor_value(flux, vp.lambda) * group_scale;
+            };
+            tbb::parallel_for(size_t(0), pixels.size(), [&](size_t index) {
+                const PixelState &state = pixels[index];
+                PixelEstimate &estimate = estimates_[index];
+                estimate.direct_sum += state.direct;
+                const int g = groups.group_of_pixel(index);
+                // Both visible points gather within the pixel's radius, so their photons are
+                // counted together by the radius reduction.
+                RGB phi_rgb;
+                int gathered = 0;
+                for (const VisiblePoint *vp : {&state.vp, &state.subsurface_vp})
+                    if (vp->bsdf) phi_rgb += gather(*vp, g, estimate.radius, gathered);
                 if (gathered == 0) return;
                 const float m = float(gathered);
                 const float n_new = estimate.photons + kGamma * m;

@@ -30,6 +30,9 @@ struct LightVertex {
     float d_vcm, d_vc, d_vm;
     uint16_t path_length;  // segments from the light to this vertex
     bool secondary_terminated;
+    // The exit of a jump through a profile solid (vcm_mis.h): connected, never merged at, and
+    // the density of reaching its predecessor from it is the jump's, 1.
+    bool after_jump = false;
 };
 
 struct Photon {

@@ -6,11 +6,13 @@
 #include "integrators/common/merge_radius.h"
 #include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
+#include "integrators/common/profile_subsurface.h"
 #include "integrators/common/splat_scale.h"
 #include "integrators/common/transmittance.h"
 #include "integrators/vcm/light_vertex.h"
 #include "integrators/vcm/vcm_mis.h"
 #include "integrators/common/wavelength_groups.h"
+#include "materials/disney_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
 #include "spatial/range_search.h"
@@ -107,11 +109,12 @@ struct PhotonBuffer {
             photons[kind].clear();
         }
     }
-    // The photons of one light path's vertices.
+    // The photons of one light path's vertices (none at the exit of a jump, vcm_mis.h).
     PathPhotons add(std::span<const LightVertex> path) {
         PathPhotons added{this};
         for (int kind = 0; kind < 2; ++kind) added.begin[kind] = uint32_t(photons[kind].size());
         for (const LightVertex &v : path) {
+            if (v.after_jump) continue;
             const ScatteringPoint &point = v.point;
             const int kind = point.in_medium() ? 1 : 0;
             positions[kind].push_back(point.p);
@@ -207,9 +210,9 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
     scene.camera->pdf_we(Ray{cs->p_lens, -cs->wi, Infinity}, &pdf_lens, &pdf_dir);
     const float dist2 = length_squared(cs->p_lens - point.p);
     const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * point.cosine(cs->wi) / dist2;
-    const float bsdf_rev_pdf = point.pdf(cs->wi, point.wo, TransportMode::Radiance);
-    const float w_light = mis(camera_pdf_a / ctx.it.light_paths) *
-                          (ctx.w.at(point.in_medium()).vm_weight + m.d_vcm + m.d_vc * mis(bsdf_rev_pdf));
+    const float bsdf_rev_pdf = v.after_jump ? 1.f : point.pdf(cs->wi, point.wo, TransportMode::Radiance);
+    const MergeWeights &merge = v.after_jump ? NoMerge : ctx.w.at(point.in_medium());
+    const float w_light = mis(camera_pdf_a / ctx.it.light_paths) * (merge.vm_weight + m.d_vcm + m.d_vc * mis(bsdf_rev_pdf));
     SampledSpectrum L = v.beta * f * cs->We * (1 / (cs->pdf * (1 + w_light)));
     if (L.is_black()) return;
     if (L.has_non_finite()) {
@@ -220,6 +223,41 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
                                       point.medium_towards(cs->wi), lambda, ctx.pixel.rays);
     if (T.is_black()) return;
     scene.film->add_splat(cs->p_raster, L * T, lambda);
+}
+
+// The rest of a profile BSSRDF event that the light subpath's BSDF sample bs at `entry` began
+// (vcm_mis.h): the exit, appended as a vertex after a jump and joined to the lens like any
+// other, then, unless the path is at max_depth, a direction from its exit lobe (ray, from
+// exit_point). False when the subpath ends.
+bool jump_through_profile(const LightPathContext &ctx, const DisneyMaterial &material, const SurfaceInteraction &entry,
+                          const BSDFSample &bs, int path_length, const SampledWavelengths &lambda,
+                          const SampledSpectrum &flux, SampledSpectrum &beta, SubpathMis &m, const Medium *&medium,
+                          std::vector<LightVertex> &store, Ray &ray, Vec3f &exit_point) {
+    Sampler &sampler = ctx.pixel.sampler;
+    beta *= bs.f * (importance_cosine(entry, entry.wo, bs.wi) / bs.pdf);
+    m.jump(ctx.w, ctx.w.surface, profile_exit_density(material, entry, ctx.pixel.sample_scratch));
+    std::optional<ProfileExit> exit =
+        sample_profile_exit(ctx.it.scene, material, entry, lambda, sampler, ctx.bsdf_memory, ctx.pixel.rays);
+    if (!exit) return false;
+    beta *= exit->weight;
+    if (beta.is_black()) return false;
+    const SurfaceInteraction &si = exit->si;
+    const LightVertex v{surface_point(si, exit->bsdf, medium), flux * beta, m.d_vcm, m.d_vc, m.d_vm,
+                        uint16_t(path_length), lambda.secondary_terminated(), true};
+    store.push_back(v);
+    if (ctx.it.use_vc) {
+        const Vec2f u_lens = sampler.get_2d();
+        if (ctx.connect_to_lens) connect_to_camera(ctx, v, m, lambda, u_lens);
+    }
+    if (path_length >= ctx.it.max_depth) return false;
+    auto next = exit->bsdf.sample_f(si.wo, 0, sampler.get_2d(), TransportMode::Importance);
+    if (!next) return false;
+    m.scatter(ctx.w, NoMerge, abs_dot(si.n, next->wi), next->pdf, 1.f, false);
+    beta *= next->f * (importance_cosine(si, si.wo, next->wi) / next->pdf);
+    medium = medium_after(si, next->wi, medium);
+    ray = si.spawn_ray(next->wi);
+    exit_point = si.p;
+    return true;
 }
 
 // Traces the light subpath of one pixel with its group's wavelengths, appending its
@@ -297,8 +335,12 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
                 if (ctx.connect_to_lens) connect_to_camera(ctx, v, m, lambda, u_lens);
             }
         }
-        // A vertex further along could not be part of a path within max_depth.
-        if (path_length >= it.max_depth) break;
+        // A vertex further along could not be part of a path within max_depth; the exit of a
+        // jump through a profile solid still can be, as it shares the entry's path length.
+        const bool last = path_length >= it.max_depth;
+        const bool may_jump = !point.in_medium() && si.material->has_profile_subsurface();
+        if (last && !may_jump) break;
+        Vec3f leaving_from = point.p;
 
         if (point.in_medium()) {
             // The phase function is sampled exactly (f / pdf = 1) and is symmetric.
@@ -310,20 +352,29 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
             float u = sampler.get_1d();
             auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
             if (!bs) break;
-            if (bs->dispersive && !lambda.secondary_terminated()) {
-                lambda.terminate_secondary();
-                drop_secondary(beta);
+            const DisneyMaterial *profile = may_jump ? profile_entry(si, *bs) : nullptr;
+            if (profile) {
+                if (!jump_through_profile(ctx, *profile, si, *bs, path_length, lambda, flux, beta, m, medium, store,
+                                          ray, leaving_from))
+                    break;
+            } else {
+                if (last) break;
+                if (bs->dispersive && !lambda.secondary_terminated()) {
+                    lambda.terminate_secondary();
+                    drop_secondary(beta);
+                }
+                const float pdf_dir =
+                    bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, TransportMode::Importance) : bs->pdf;
+                const float pdf_rev = bsdf.pdf(bs->wi, si.wo, TransportMode::Radiance);
+                m.scatter(ctx.w, ctx.w.surface, abs_dot(si.n, bs->wi), pdf_dir, pdf_rev, bs->is_specular());
+                beta *= bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
+                if (bs->is_transmission() && si.material->has_interior_absorption())
+                    absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+                medium = medium_after(si, bs->wi, medium);
+                ray = si.spawn_ray(bs->wi);
             }
-            const float pdf_dir = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, TransportMode::Importance) : bs->pdf;
-            const float pdf_rev = bsdf.pdf(bs->wi, si.wo, TransportMode::Radiance);
-            m.scatter(ctx.w, ctx.w.surface, abs_dot(si.n, bs->wi), pdf_dir, pdf_rev, bs->is_specular());
-            beta *= bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
-            if (bs->is_transmission() && si.material->has_interior_absorption())
-                absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-            medium = medium_after(si, bs->wi, medium);
-            ray = si.spawn_ray(bs->wi);
         }
-        segment_start = point.p;
+        segment_start = leaving_from;
 
         // Russian roulette changes the throughput, not the densities: the MIS weights are
         // unaffected and remain a partition of unity.
@@ -343,6 +394,9 @@ struct CameraVertex {
     const ScatteringPoint &point;
     const SubpathMis &m;
     int path_length;
+    // The exit of a jump through a profile solid (vcm_mis.h): it can be merged at, and the
+    // density of reaching its predecessor from it is the jump's, 1.
+    bool after_jump = false;
 };
 
 struct CameraPathContext {
@@ -352,6 +406,11 @@ struct CameraPathContext {
     const VcmWeights &w;
     const SampledWavelengths &lambda;    // the camera subpath's (possibly terminated) set
     float hero_scale;                    // see in_group_measure
+    // What the camera subpath is completed with: the pixel's light subpath, and the photons of
+    // its wavelength group.
+    const StoredPath &light_path;
+    const PhotonMap &surface_photons, &medium_photons;
+    std::vector<uint32_t> &found;        // range-search results, reused
 };
 
 // Next-event estimation at a camera vertex: a light sampled and connected (the s = 1
@@ -383,8 +442,9 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
     else if (light.type() == LightType::Infinite) assumed_direct_pdf *= e.pdf_dir;
     const float emission_pdf = chosen->pmf * e.pdf_pos * e.pdf_dir;
     const float w_light = is_delta_light(light.type()) ? 0.f : mis(scattering.pdf_forward / assumed_direct_pdf);
+    const float pdf_reverse = z.after_jump ? 1.f : scattering.pdf_reverse;
     const float w_camera = mis(emission_pdf * point.cosine(ls->wi) / (assumed_direct_pdf * cos_at_light)) *
-                           (ctx.w.at(point.in_medium()).vm_weight + z.m.d_vcm + z.m.d_vc * mis(scattering.pdf_reverse));
+                           (ctx.w.at(point.in_medium()).vm_weight + z.m.d_vcm + z.m.d_vc * mis(pdf_reverse));
     SampledSpectrum L = scattering.f * ls->L * (1 / (chosen->pmf * ls->pdf * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
     Ray shadow = ls->is_infinite ? spawn_ray(point.p, point.ng, ls->wi) : spawn_ray_between(point, ls->p_light, ls->n_light);
@@ -407,10 +467,12 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
 
     const float camera_dir_pdf_a = at_camera.pdf_forward * light.cosine(d) / dist2;
     const float light_dir_pdf_a = at_light.pdf_forward * camera.cosine(d) / dist2;
-    const float w_light = mis(camera_dir_pdf_a) *
-                          (ctx.w.at(light.in_medium()).vm_weight + v.d_vcm + v.d_vc * mis(at_light.pdf_reverse));
+    const MergeWeights &light_merge = v.after_jump ? NoMerge : ctx.w.at(light.in_medium());
+    const float light_pdf_reverse = v.after_jump ? 1.f : at_light.pdf_reverse;
+    const float camera_pdf_reverse = z.after_jump ? 1.f : at_camera.pdf_reverse;
+    const float w_light = mis(camera_dir_pdf_a) * (light_merge.vm_weight + v.d_vcm + v.d_vc * mis(light_pdf_reverse));
     const float w_camera = mis(light_dir_pdf_a) *
-                           (ctx.w.at(camera.in_medium()).vm_weight + z.m.d_vcm + z.m.d_vc * mis(at_camera.pdf_reverse));
+                           (ctx.w.at(camera.in_medium()).vm_weight + z.m.d_vcm + z.m.d_vc * mis(camera_pdf_reverse));
     SampledSpectrum L = at_camera.f * at_light.f * v.beta * (1 / (dist2 * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
     SampledSpectrum T = transmittance(ctx.it.scene, spawn_ray_between(camera, light.p, light.ng),
@@ -421,8 +483,9 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
 
 // Gathers the photons of the camera vertex's wavelength group within the merge radius on its
 // surface (tech. report eqs. 42-43), normalised by pi r^2 times the group's light-path count.
-SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVertex &z, const PhotonMap &map,
-                                 std::vector<uint32_t> &found) {
+SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVertex &z) {
+    const PhotonMap &map = ctx.surface_photons;
+    std::vector<uint32_t> &found = ctx.found;
     const ScatteringPoint &point = z.point;
     const MergeWeights &here = ctx.w.surface;
     map.search->find_within(point.p, ctx.it.radius, found);
@@ -438,7 +501,7 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
         SampledSpectrum f = point.bsdf.f(point.wo, wi, TransportMode::Radiance);
         if (f.is_black()) continue;
         const float camera_dir_pdf = point.bsdf.pdf(point.wo, wi, TransportMode::Radiance);
-        const float camera_rev_pdf = point.bsdf.pdf(wi, point.wo, TransportMode::Importance);
+        const float camera_rev_pdf = z.after_jump ? 1.f : point.bsdf.pdf(wi, point.wo, TransportMode::Importance);
         const float w_light = photon.d_vcm * here.vc_weight + photon.d_vm * mis(camera_dir_pdf);
         const float w_camera = z.m.d_vcm * here.vc_weight + z.m.d_vm * mis(camera_rev_pdf);
         // Photon density is flux per unit of geometric area; the shading-normal BSDF turns it
@@ -473,8 +536,9 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
 // a sphere, not a disk, and the vertex has no surface. MIS: the merge at a medium vertex has
 // eta = V N_group times the density of the connection ending there (vcm_mis.h), with d_vm
 // rescaled from its surface reference by d_vm_scale.
-SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex &z, const PhotonMap &map,
-                                std::vector<uint32_t> &found) {
+SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex &z) {
+    const PhotonMap &map = ctx.medium_photons;
+    std::vector<uint32_t> &found = ctx.found;
     const ScatteringPoint &point = z.point;
     const MergeWeights &here = ctx.w.medium;
     const HenyeyGreenstein &phase = point.medium->phase();
@@ -500,6 +564,55 @@ SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex
     return sum * inverse_sigma_s * ctx.it.volume_normalization[ctx.group];
 }
 
+// Every strategy that completes the camera subpath at its non-specular vertex z, weighted:
+// next-event estimation, connections to the pixel's light subpath, merges with the photons
+// around z. Before the camera subpath's throughput.
+SampledSpectrum complete_at(const CameraPathContext &ctx, const CameraVertex &z) {
+    SampledSpectrum L(0.f);
+    if (ctx.it.use_vc) {
+        L += sample_light(ctx, z);
+        const StoredPath &light_path = ctx.light_path;
+        for (uint32_t i = 0; i < light_path.count; ++i) {
+            const LightVertex &v = (*light_path.vertices)[light_path.begin + i];
+            if (v.path_length + z.path_length > ctx.it.max_depth) break;
+            L += connect(ctx, z, v);
+        }
+    }
+    if (ctx.it.use_vm) L += z.point.in_medium() ? merge_in_medium(ctx, z) : merge_on_surface(ctx, z);
+    return L;
+}
+
+// The rest of a profile BSSRDF event that the camera subpath's BSDF sample bs at `entry` began
+// (vcm_mis.h): the exit, a camera vertex after a jump that is completed like any other, then a
+// direction from its exit lobe (ray, from exit_point; previous is where it was sampled). False
+// when the subpath ends.
+bool jump_through_profile(const CameraPathContext &ctx, const DisneyMaterial &material,
+                          const SurfaceInteraction &entry, const BSDFSample &bs, int path_length, SubpathMis &m,
+                          SampledSpectrum &beta, SampledSpectrum &L, const Medium *&medium, Ray &ray,
+                          Vec3f &exit_point, LightSampleContext &previous) {
+    Sampler &sampler = ctx.pixel.sampler;
+    ScratchBuffer &scratch = ctx.pixel.sample_scratch;
+    beta *= bs.f * (abs_dot(bs.wi, entry.shading.n) / bs.pdf);
+    m.jump(ctx.w, NoMerge, profile_exit_density(material, entry, scratch));
+    std::optional<ProfileExit> exit =
+        sample_profile_exit(ctx.it.scene, material, entry, ctx.lambda, sampler, scratch, ctx.pixel.rays);
+    if (!exit) return false;
+    beta *= exit->weight;
+    if (beta.is_black()) return false;
+    const SurfaceInteraction &si = exit->si;
+    const ScatteringPoint point = surface_point(si, exit->bsdf, medium);
+    L += beta * complete_at(ctx, CameraVertex{point, m, path_length, true});
+    auto next = exit->bsdf.sample_f(si.wo, 0, sampler.get_2d(), TransportMode::Radiance);
+    if (!next) return false;
+    m.scatter(ctx.w, ctx.w.surface, abs_dot(si.n, next->wi), next->pdf, 1.f, false);
+    beta *= next->f * (abs_dot(next->wi, si.shading.n) / next->pdf);
+    previous = LightSampleContext{si.p, si.n, si.shading.n};
+    medium = medium_after(si, next->wi, medium);
+    ray = si.spawn_ray(next->wi);
+    exit_point = si.p;
+    return true;
+}
+
 // Radiance of the camera subpath of one pixel (tech. report section 5), in the measure of its
 // group's full wavelength set.
 SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pixel, int group,
@@ -511,7 +624,8 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     const VcmWeights &w = it.weights[group];
     SampledWavelengths terminated = lambda;
     terminated.terminate_secondary();
-    const CameraPathContext ctx{it, pixel, group, w, lambda, lambda.pdf()[0] / terminated.pdf()[0]};
+    const CameraPathContext ctx{it,          pixel,           group,          w, lambda, lambda.pdf()[0] / terminated.pdf()[0],
+                                light_path, surface_photons, medium_photons, found};
 
     // The camera generates the first vertex with its directional density, one sample per pixel
     // of the full frame; light tracing reaches it with N light paths (eq. 31 for the camera).
@@ -589,22 +703,11 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
         }
         if ((!point.in_medium() && !point.bsdf) || path_length > it.max_depth) break;
 
-        if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
-            const CameraVertex z{point, m, path_length};
-            if (it.use_vc) {
-                L += beta * sample_light(ctx, z);
-                for (uint32_t i = 0; i < light_path.count; ++i) {
-                    const LightVertex &v = (*light_path.vertices)[light_path.begin + i];
-                    if (v.path_length + path_length > it.max_depth) break;
-                    L += beta * connect(ctx, z, v);
-                }
-            }
-            if (it.use_vm)
-                L += beta * (point.in_medium() ? merge_in_medium(ctx, z, medium_photons, found)
-                                               : merge_on_surface(ctx, z, surface_photons, found));
-        }
+        if (point.in_medium() || is_non_specular(point.bsdf.flags()))
+            L += beta * complete_at(ctx, CameraVertex{point, m, path_length});
         // Scattering on from vertex max_depth can still reach an emitter (a path of max_depth
         // scattering events, as the path tracer counts them); the next vertex ends the path.
+        Vec3f leaving_from = point.p;
 
         if (point.in_medium()) {
             // The phase function is sampled exactly (f / pdf = 1) and is symmetric.
@@ -617,24 +720,30 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
             float u = sampler.get_1d();
             auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
             if (!bs) break;
-            if (bs->dispersive && !lambda.secondary_terminated()) {
-                lambda.terminate_secondary();
-                drop_secondary(beta);
+            if (const DisneyMaterial *profile = profile_entry(si, *bs)) {
+                if (!jump_through_profile(ctx, *profile, si, *bs, path_length, m, beta, L, medium, ray, leaving_from,
+                                          previous))
+                    break;
+            } else {
+                if (bs->dispersive && !lambda.secondary_terminated()) {
+                    lambda.terminate_secondary();
+                    drop_secondary(beta);
+                }
+                const float pdf_dir_bsdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
+                const float pdf_rev_bsdf = bsdf.pdf(bs->wi, si.wo, TransportMode::Importance);
+                m.scatter(w, w.surface, abs_dot(si.n, bs->wi), pdf_dir_bsdf, pdf_rev_bsdf, bs->is_specular());
+                beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
+                if (bs->is_transmission()) {
+                    eta_scale *= sqr(bs->eta);
+                    if (si.material->has_interior_absorption())
+                        absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
+                }
+                previous = LightSampleContext{si.p, si.n, si.shading.n};
+                medium = medium_after(si, bs->wi, medium);
+                ray = si.spawn_ray(bs->wi);
             }
-            const float pdf_dir_bsdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
-            const float pdf_rev_bsdf = bsdf.pdf(bs->wi, si.wo, TransportMode::Importance);
-            m.scatter(w, w.surface, abs_dot(si.n, bs->wi), pdf_dir_bsdf, pdf_rev_bsdf, bs->is_specular());
-            beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
-            if (bs->is_transmission()) {
-                eta_scale *= sqr(bs->eta);
-                if (si.material->has_interior_absorption())
-                    absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-            }
-            previous = LightSampleContext{si.p, si.n, si.shading.n};
-            medium = medium_after(si, bs->wi, medium);
-            ray = si.spawn_ray(bs->wi);
         }
-        segment_start = point.p;
+        segment_start = leaving_from;
 
         // Russian roulette on beta * eta^2, as in the path tracer (pbrt-v4 14.1).
         SampledSpectrum rr_beta = beta * eta_scale;

@@ -16,6 +16,13 @@
 // left out of every strategy's density, on both subpaths alike (as pbrt-v3/v4's BDPT do): the
 // weights are then those of a consistent set of per-strategy densities and still sum to one.
 //
+// Profile subsurface (profile_subsurface.h). A path through a diffusion or dipole solid jumps
+// from the entry x_j to the exit x_j+1 (light-side numbering) without a direction between them.
+// As in BDPT (PathVertex::after_jump) the jump's densities are taken as 1 both ways, and the one
+// strategy that would join x_j and x_j+1 is not one. Merging needs a photon that arrived at its
+// vertex along a segment, so photons are not kept at light subpaths' exits: x_j (the light's
+// entry, the camera's exit) can be merged at, x_j+1 cannot. Every other strategy counts.
+//
 // The strategy families can be switched off (bpm has no connections; vcm has both): a disabled
 // family's terms are removed from every sum, so the remaining weights still sum to one.
 #pragma once
@@ -46,6 +53,9 @@ struct MergeWeights {
     float merge_ratio = 1; // mis(eta / eta_surface), see above
     float d_vm_scale = 1;  // mis(eta_surface / eta)
 };
+
+// The weights of a vertex that cannot be merged at (see above): vm_weight and merge_ratio zero.
+inline constexpr MergeWeights NoMerge{0, 0, 0, 1};
 
 // Per-iteration constants.
 struct VcmWeights {
@@ -101,6 +111,17 @@ struct SubpathMis {
         d_vc = g * (d_vc * mis(pdf_rev) + w.vc_enabled * d_vcm + here.vm_weight);
         d_vm = g * (d_vm * mis(pdf_rev) + d_vcm * w.surface.vc_weight + here.merge_ratio);
         d_vcm = mis(1 / pdf_dir);
+    }
+
+    // The subpath jumps through a profile solid from its entry to its exit (see above): scatter
+    // and arrive with densities and conversions of 1, and no connection between the two.
+    // pdf_rev_exit is the density with which the exit lobe at the entry samples the direction
+    // back along this subpath (profile_exit_density). here: the entry's merge weights, NoMerge
+    // when this is a camera subpath (the light's exit is there).
+    void jump(const VcmWeights &w, const MergeWeights &here, float pdf_rev_exit) {
+        d_vc = d_vc * mis(pdf_rev_exit) + w.vc_enabled * d_vcm + here.vm_weight;
+        d_vm = d_vm * mis(pdf_rev_exit) + d_vcm * w.surface.vc_weight + here.merge_ratio;
+        d_vcm = 0;
     }
 };
 

@@ -270,7 +270,6 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
                                  SpectrumPtr &interior_sigma_a) {
     DisneySubsurface sub;
     sub.model = read_subsurface_model(params);
-    sub.location = params.location("subsurface");
     if (sub.model == SubsurfaceModel::Dipole) {
         std::string preset = params.get_one_string("preset", "");
         if (!preset.empty()) {

@@ -61,7 +61,6 @@ struct DisneySubsurface {
     float scale = 1;
     // Profile models: the strength of the cavity fade (see DisneyMaterial::cavity_fade).
     float cavity_fade = 0;
-    SourceLocation location;      // of "subsurface", for errors about the model
 };
 
 // The profile of a diffusion or dipole solid for light entering at one point.
@@ -93,8 +92,6 @@ class DisneyMaterial final : public Material {
     bool has_profile_subsurface() const override {
         return subsurface_.enabled && subsurface_.model != SubsurfaceModel::RandomWalk;
     }
-    // Where the scene chose the model (the "subsurface" parameter, or the directive).
-    const SourceLocation &subsurface_location() const { return subsurface_.location; }
     // For profile subsurface: the profile of light entering at si, and the BSDF of its exit lobe
     // at a point where it leaves (wo must point inside there).
     DisneySubsurfaceProfile subsurface_profile(const SurfaceInteraction &si, const SampledWavelengths &lambda) const;

@@ -33,7 +33,6 @@ struct SceneFeatures {
     bool media = false;
     bool medium_boundaries = false;      // shapes without a material, which rays pass through
     bool subsurface = false;
-    bool profile_subsurface = false;     // a diffusion-profile BSSRDF, which only pt samples
     SceneProbe probe;                    // what camera and lights see (scene_probe.h)
     bool absorbing_interiors = false;
 };

@@ -283,7 +283,6 @@ void analyse_features(const SceneDescription &d, Scene &scene) {
         f.dispersive_materials |= m->is_dispersive();
         f.specular_surfaces |= m->has_specular_lobe();
         f.subsurface |= m->has_subsurface();
-        f.profile_subsurface |= m->has_profile_subsurface();
         f.absorbing_interiors |= m->has_interior_absorption();
     }
     f.media = !scene.media.empty();
@@ -301,9 +300,6 @@ std::string percent(float fraction) { return std::to_string(int(std::lround(100 
 } // namespace
 
 IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool camera_models_importance) {
-    if (features.profile_subsurface)
-        return {"pt", "a material uses profile subsurface scattering (diffusion or dipole), which only "
-                      "the path tracer samples"};
     if (!features.caustic_paths)
         return {"pt", "no specular surface can focus light onto a diffuse one, so camera paths with "
                       "light sampling find every path; path tracing is the cheapest per sample"};

@@ -1104,7 +1104,6 @@ TEST_F(DisneyMaterialTest, SubsurfaceModels) {
     EXPECT_TRUE(diffusion->has_profile_subsurface());
     EXPECT_FALSE(diffusion->interior_medium());
     EXPECT_TRUE(diffusion->has_interior_absorption());
-    EXPECT_EQ(diffusion->subsurface_location().line, 2);
     DisneyParameters p = at(*diffusion);
     EXPECT_TRUE(p.subsurface);
     EXPECT_TRUE(p.profile_subsurface);
