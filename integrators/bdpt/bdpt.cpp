@@ -145,7 +145,7 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
             ray = si.spawn_ray(ray.d);
             continue;
         }
-        BSDF bsdf = si.material->get_bsdf(si, ctx.lambda, ctx.sample.scratch);
+        BSDF bsdf = shade(si, ctx.lambda, ctx.sample.scratch);
         if (!bsdf) {
             medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);

@@ -8,10 +8,8 @@ namespace caustica {
 
 const DisneyMaterial *profile_entry(const SurfaceInteraction &si, const BSDFSample &bs) {
     if (!bs.is_transmission() || !is_diffuse(bs.flags) || bs.is_specular()) return nullptr;
-    if (!si.material->has_subsurface() || si.material->interior_medium() || dot(si.wo, si.shading.n) <= 0)
-        return nullptr;
-    auto *disney = dynamic_cast<const DisneyMaterial *>(si.material);
-    return disney && disney->has_profile_subsurface() ? disney : nullptr;
+    if (!si.material->has_profile_subsurface() || dot(si.wo, si.shading.n) <= 0) return nullptr;
+    return dynamic_cast<const DisneyMaterial *>(si.material);
 }
 
 std::optional<ProfileExit> sample_profile_exit(const Scene &scene, const DisneyMaterial &material,

@@ -4,12 +4,12 @@
 // the profile (subsurface_probe.h) and continues through the exit lobe there.
 //
 // The BSSRDF w (1 - F_in / 2) R(r) (1 - F_out / 2) / pi (docs/disney.md) is symmetric in its two
-// ends, so camera paths (pt, bdpt) and light paths (lt, bdpt) use the same pieces in the same
-// order: the
-// entry event (DisneyBxDF's discrete crossing, f |cos| / pdf carrying w (1 - F / 2) of the
-// direction the path came from), the profile's weight R / pdf at the sampled exit, and the exit
-// lobe towards the direction the path leaves in. Entry and exit are one scattering event for
-// maxdepth, as the BRDF they converge to is.
+// ends, so camera paths (pt, bdpt, sppm, bpm, vcm) and light paths (lt, bdpt, the photon
+// integrators') use the same pieces in the same order: the entry event (DisneyBxDF's discrete
+// crossing, f |cos| / pdf carrying w (1 - F / 2) of the direction the path came from), the
+// profile's weight R / pdf at the sampled exit, and the exit lobe towards the direction the path
+// leaves in. Entry and exit are one scattering event for maxdepth, as the BRDF they converge to
+// is.
 #pragma once
 
 #include "geometry/interaction.h"

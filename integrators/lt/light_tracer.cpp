@@ -198,7 +198,7 @@ void trace_light_path(const LightPathContext &ctx) {
         // depth + 1 bounces, which max_depth bounds as it does camera paths.
         if (depth++ == ctx.max_depth) break;
 
-        BSDF bsdf = si.material->get_bsdf(si, lambda, ctx.sample.scratch);
+        BSDF bsdf = shade(si, lambda, ctx.sample.scratch);
         if (!bsdf) {
             medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);

@@ -130,7 +130,7 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWa
         }
         if (depth++ == max_depth) break;
 
-        BSDF bsdf = si.material->get_bsdf(si, lambda, scratch);
+        BSDF bsdf = shade(si, lambda, scratch);
         if (!bsdf) {
             st.medium = medium_after(si, ray.d, st.medium);
             ray = si.spawn_ray(ray.d);

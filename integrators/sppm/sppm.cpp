@@ -176,7 +176,7 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
         }
         if (si.area_light)
             add_emission(*si.area_light, si.area_light->L(si.p, si.n, si.uv, si.wo, lambda), depth, -si.wo);
-        BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.iteration_scratch) : BSDF();
+        BSDF bsdf = si.material ? shade(si, lambda, ctx.iteration_scratch) : BSDF();
         if (!bsdf) {
             medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);
@@ -259,7 +259,7 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
         }
         beta *= segment.weight;
         if (!hit || beta.is_black()) return;
-        BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.sample_scratch) : BSDF();
+        BSDF bsdf = si.material ? shade(si, lambda, ctx.sample_scratch) : BSDF();
         if (!bsdf) {
             medium = medium_after(si, ray.d, medium);
             ray = si.spawn_ray(ray.d);

@@ -311,7 +311,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
             point = medium_point(ray, segment.t, medium);
         } else {
             if (!hit) break;
-            BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, ctx.bsdf_memory) : BSDF();
+            BSDF bsdf = si.material ? shade(si, lambda, ctx.bsdf_memory) : BSDF();
             if (!bsdf) {
                 // A boundary between media only: the segment continues through it.
                 medium = medium_after(si, ray.d, medium);
@@ -624,7 +624,8 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     const VcmWeights &w = it.weights[group];
     SampledWavelengths terminated = lambda;
     terminated.terminate_secondary();
-    const CameraPathContext ctx{it,          pixel,           group,          w, lambda, lambda.pdf()[0] / terminated.pdf()[0],
+    const float hero_scale = lambda.pdf()[0] / terminated.pdf()[0];
+    const CameraPathContext ctx{it,         pixel,           group,          w,    lambda, hero_scale,
                                 light_path, surface_photons, medium_photons, found};
 
     // The camera generates the first vertex with its directional density, one sample per pixel
@@ -676,7 +677,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
         if (segment.scattered) {
             point = medium_point(ray, segment.t, medium);
         } else {
-            BSDF bsdf = si.material ? si.material->get_bsdf(si, lambda, pixel.sample_scratch) : BSDF();
+            BSDF bsdf = si.material ? shade(si, lambda, pixel.sample_scratch) : BSDF();
             if (!bsdf && !si.area_light) {
                 medium = medium_after(si, ray.d, medium);
                 ray = si.spawn_ray(ray.d);

@@ -8,6 +8,7 @@ namespace caustica {
 
 class Material;
 class Light;
+class Medium;
 struct MediumInterface;
 
 struct SurfaceInteraction {
@@ -26,6 +27,8 @@ struct SurfaceInteraction {
     const Material *material = nullptr;      // null: a boundary between media only
     const Light *area_light = nullptr;       // emitter attached to this primitive, if any
     const MediumInterface *medium_interface = nullptr;
+    // The participating medium inside the material here, set with the BSDF (shade(), material.h).
+    const Medium *interior = nullptr;
 
     Ray spawn_ray(Vec3f d) const { return caustica::spawn_ray(p, n, d); }
     Ray spawn_ray_to(Vec3f p_to, Vec3f n_to = {}) const {

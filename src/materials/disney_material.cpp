@@ -65,6 +65,21 @@ FloatTexturePtr read_float(const ParameterDictionary &params, const NamedTexture
 // The random-walk interior's coefficient at each wavelength, from baseColor A and
 // scatterDistance d there (random_walk_albedo.h): sigma_t = 1 / l(d, A), split by the
 // single-scattering albedo that reflects A, plus any Beer-Lambert absorption of the solid.
+// The random walk's interior at one wavelength for base colour A and scatter distance d.
+struct RandomWalkCoefficients {
+    float sigma_s, sigma_a;
+};
+RandomWalkCoefficients random_walk_coefficients(float A, float d) {
+    A = clamp(A, 0.f, 1.f);
+    // A zero distance is the diffuse BRDF's limit; a tiny one keeps sigma_t finite.
+    d = std::max(d, 1e-6f);
+    const float sigma_t = 1 / random_walk_mean_free_path(d, A);
+    // Light that enters returns with probability R; the BRDF's Lambertian part reflects A times
+    // the exit lobe's albedo 41/42, so that is what R must be.
+    const float alpha = random_walk_single_scattering_albedo(A * 41 / 42);
+    return {alpha * sigma_t, (1 - alpha) * sigma_t};
+}
+
 class RandomWalkCoefficient final : public Spectrum {
   public:
     enum Kind { Scattering, Absorption };
@@ -75,15 +90,9 @@ class RandomWalkCoefficient final : public Spectrum {
             max_ = std::max(max_, (*this)(float(lambda)));
     }
     float operator()(float lambda) const override {
-        float A = clamp((*albedo_)(lambda), 0.f, 1.f);
-        // A zero distance is the diffuse BRDF's limit; a tiny one keeps sigma_t finite.
-        float d = std::max((*distance_)(lambda), 1e-6f);
-        float sigma_t = 1 / random_walk_mean_free_path(d, A);
-        // Light that enters returns with probability R; the BRDF's Lambertian part reflects
-        // A times the exit lobe's albedo 41/42, so that is what R must be.
-        float alpha = random_walk_single_scattering_albedo(A * 41 / 42);
-        if (kind_ == Scattering) return alpha * sigma_t;
-        return (1 - alpha) * sigma_t + (absorption_ ? (*absorption_)(lambda) : 0.f);
+        const RandomWalkCoefficients c = random_walk_coefficients((*albedo_)(lambda), (*distance_)(lambda));
+        if (kind_ == Scattering) return c.sigma_s;
+        return c.sigma_a + (absorption_ ? (*absorption_)(lambda) : 0.f);
     }
     float max_value() const override { return max_; }
 
@@ -248,6 +257,21 @@ DisneySubsurfaceProfile DisneyMaterial::subsurface_profile(const SurfaceInteract
     return DipoleProfile(c.sigma_a, c.sigma_s_reduced, reference_eta_);
 }
 
+const Medium *DisneyMaterial::interior_medium(const SurfaceInteraction &si, const SampledWavelengths &lambda,
+                                             ScratchBuffer &scratch) const {
+    if (subsurface_.medium || !has_interior_medium()) return subsurface_.medium.get();
+    const SampledSpectrum albedo = textures_.base_color->evaluate(TextureEvalContext(si), lambda);
+    const SampledSpectrum d = subsurface_.scatter_distance->sample(lambda);
+    SampledSpectrum sigma_s(0.f), sigma_a(0.f);
+    if (subsurface_.walk_absorption) sigma_a = subsurface_.walk_absorption->sample(lambda);
+    for (int i = 0; i < NumWavelengths; ++i) {
+        const RandomWalkCoefficients c = random_walk_coefficients(albedo[i], d[i]);
+        sigma_s[i] = c.sigma_s;
+        sigma_a[i] += c.sigma_a;
+    }
+    return scratch.make<SampledHomogeneousMedium>(sigma_a, sigma_s, 0.f, this);
+}
+
 BSDF DisneyMaterial::subsurface_exit_bsdf(const SurfaceInteraction &si, ScratchBuffer &scratch) const {
     return BSDF(si.shading.n, si.shading.dpdu, scratch.make<DisneySubsurfaceExitBxDF>());
 }
@@ -297,9 +321,7 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
         if (!scatter_distance) return sub;
         auto *distance = dynamic_cast<const ConstantSpectrumTexture *>(scatter_distance.get());
         if (!distance)
-            throw InputError(params.location("scatterDistance"),
-                             std::string("\"scatterDistance\" must be a constant") +
-                                 (sub.model == SubsurfaceModel::RandomWalk ? ": the subsurface volume is one per object" : ""));
+            throw InputError(params.location("scatterDistance"), "\"scatterDistance\" must be a constant");
         float lo, hi;
         spectrum_range(*distance->spectrum(), &lo, &hi);
         if (!(lo >= 0 && std::isfinite(hi)))
@@ -321,13 +343,13 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
         throw InputError(params.location("eta"), "the dipole needs an interior index \"eta\" >= 1 (its boundary "
                                                  "condition is for light leaving a denser medium)");
     if (sub.model == SubsurfaceModel::RandomWalk) {
-        auto *albedo = dynamic_cast<const ConstantSpectrumTexture *>(base_color.get());
-        if (!albedo)
-            throw InputError(params.location("baseColor"),
-                             "with random-walk subsurface scattering (\"scatterDistance\" > 0) \"baseColor\" must "
-                             "be a constant: it sets the albedo of the object's one interior volume");
-        sub.medium = create_random_walk_medium(albedo->spectrum(), sub.scatter_distance, interior_sigma_a);
-        interior_sigma_a = nullptr;  // now part of the medium
+        // The interior takes over the solid's absorption: one volume for a constant base colour,
+        // one per entry point for a textured one.
+        if (auto *albedo = dynamic_cast<const ConstantSpectrumTexture *>(base_color.get()))
+            sub.medium = create_random_walk_medium(albedo->spectrum(), sub.scatter_distance, interior_sigma_a);
+        else
+            sub.walk_absorption = interior_sigma_a;
+        interior_sigma_a = nullptr;
     }
     return sub;
 }

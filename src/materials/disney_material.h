@@ -54,7 +54,11 @@ enum class SubsurfaceModel { RandomWalk, Diffusion, Dipole };
 struct DisneySubsurface {
     bool enabled = false;
     SubsurfaceModel model = SubsurfaceModel::RandomWalk;
-    MediumPtr medium;             // random walk: the interior volume
+    // Random walk: the interior volume, or null when baseColor is a texture; then each entry
+    // point gets its own (DisneyMaterial::interior_medium), with walk_absorption (the solid's
+    // Beer-Lambert absorption, or null) added.
+    MediumPtr medium;
+    SpectrumPtr walk_absorption;
     SpectrumPtr scatter_distance; // diffusion, and dipole without a preset: d per wavelength
     // Dipole with a preset: Jensen's coefficients (mm^-1) and the scene units' conversion.
     SpectrumPtr sigma_a, sigma_s_reduced;
@@ -85,10 +89,18 @@ class DisneyMaterial final : public Material {
     }
     bool has_interior_absorption() const override { return sigma_a_ != nullptr; }
     bool has_subsurface() const override { return subsurface_.enabled; }
+    bool has_interior_medium() const override {
+        return subsurface_.enabled && subsurface_.model == SubsurfaceModel::RandomWalk;
+    }
     const Medium *interior_medium() const override { return subsurface_.medium.get(); }
+    // With a textured baseColor, the random walk's volume for a path entering at si: the
+    // coefficients of the base colour there, kept for the whole walk (as Cycles and Arnold do; the
+    // volume is not resampled as the walk moves under other colours).
+    const Medium *interior_medium(const SurfaceInteraction &si, const SampledWavelengths &lambda,
+                                  ScratchBuffer &scratch) const override;
 
     SubsurfaceModel subsurface_model() const { return subsurface_.model; }
-    // Subsurface scattering by a profile (diffusion or dipole): only the path tracer renders it.
+    // Subsurface scattering by a profile (diffusion or dipole), a BSSRDF (profile_subsurface.h).
     bool has_profile_subsurface() const override {
         return subsurface_.enabled && subsurface_.model != SubsurfaceModel::RandomWalk;
     }

@@ -24,7 +24,8 @@ class Material {
     // Does any of its lobes scatter diffusely or glossily (so it can receive a caustic)?
     virtual bool has_non_specular_lobe() const { return true; }
     virtual bool has_subsurface() const { return false; }
-    // Subsurface scattering by a diffusion profile (a BSSRDF), which only the path tracer samples.
+    // Subsurface scattering by a diffusion profile (a BSSRDF), which the integrators sample with
+    // probe rays (integrators/common/profile_subsurface.h) rather than as a BSDF lobe.
     virtual bool has_profile_subsurface() const { return false; }
     // Beer-Lambert absorption coefficient (per unit length) of the material's interior, for
     // dielectrics given sigma_a or a transmittance colour at a distance. Integrators track when a
@@ -35,11 +36,23 @@ class Material {
     }
     virtual bool has_interior_absorption() const { return false; }
     // A participating medium that fills the material's interior (the random-walk subsurface
-    // volume of the Disney material), or null. Paths that cross the surface inwards enter it,
-    // whatever the shape's MediumInterface says (medium_interface.h).
+    // volume of the Disney material). Paths that cross the surface inwards enter it, whatever the
+    // shape's MediumInterface says (medium_interface.h). When its coefficients come from textures
+    // (a textured baseColor), the material makes one per entry point, for the path's wavelengths,
+    // in scratch: then the first form is null, and the second gives the medium at si.
+    virtual bool has_interior_medium() const { return false; }
     virtual const Medium *interior_medium() const { return nullptr; }
+    virtual const Medium *interior_medium(const SurfaceInteraction &si, const SampledWavelengths &lambda,
+                                          ScratchBuffer &scratch) const {
+        (void)si, (void)lambda, (void)scratch;
+        return interior_medium();
+    }
 };
 
 using MaterialPtr = std::shared_ptr<const Material>;
+
+// What a path meets at a surface point with a material: its BSDF, and (in si.interior) the
+// medium inside, which medium_after() needs when the path crosses into it. Both live in scratch.
+BSDF shade(SurfaceInteraction &si, const SampledWavelengths &lambda, ScratchBuffer &scratch);
 
 } // namespace caustica

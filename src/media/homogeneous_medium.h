@@ -25,4 +25,30 @@ class HomogeneousMedium final : public Medium {
     HenyeyGreenstein phase_;
 };
 
+// A homogeneous medium known only at one path's wavelengths: the interior a material makes for
+// the point where a path enters it, when the interior's coefficients come from textures there
+// (the Disney material's random walk with a textured baseColor). It lives in the path's scratch
+// memory, and every lambda it is asked about must be the wavelengths it was made for (the
+// secondary ones may have been terminated since). interior_of() names the material, so that a
+// path leaving through any point of that material's surface leaves this medium.
+class SampledHomogeneousMedium final : public Medium {
+  public:
+    SampledHomogeneousMedium(const SampledSpectrum &sigma_a, const SampledSpectrum &sigma_s, float g,
+                             const Material *owner)
+        : sigma_a_(sigma_a), sigma_s_(sigma_s), phase_(g), owner_(owner) {}
+
+    SampledSpectrum sigma_a(const SampledWavelengths &) const override { return sigma_a_; }
+    SampledSpectrum sigma_s(const SampledWavelengths &) const override { return sigma_s_; }
+    const HenyeyGreenstein &phase() const override { return phase_; }
+    SampledSpectrum transmittance(float distance, const SampledWavelengths &lambda) const override;
+    MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, float u_channel,
+                                float u_distance) const override;
+    const Material *interior_of() const override { return owner_; }
+
+  private:
+    SampledSpectrum sigma_a_, sigma_s_;
+    HenyeyGreenstein phase_;
+    const Material *owner_;
+};
+
 } // namespace caustica

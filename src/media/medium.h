@@ -23,6 +23,8 @@
 
 namespace caustica {
 
+class Material;
+
 // The outcome of sampling a free-flight distance along a ray segment of length t_max.
 struct MediumEvent {
     // True: the path scatters at distance t inside the medium. False: it reaches t_max (the next
@@ -36,7 +38,6 @@ struct MediumEvent {
 
 class Medium {
   public:
-    virtual ~Medium() = default;
     virtual SampledSpectrum sigma_a(const SampledWavelengths &lambda) const = 0;
     virtual SampledSpectrum sigma_s(const SampledWavelengths &lambda) const = 0;
     virtual const HenyeyGreenstein &phase() const = 0;
@@ -46,6 +47,15 @@ class Medium {
     // Infinity). u_channel picks the wavelength whose density is used, u_distance the distance.
     virtual MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, float u_channel,
                                         float u_distance) const = 0;
+    // The material whose interior this medium is when the material made it for one entry point
+    // (SampledHomogeneousMedium), else null.
+    virtual const Material *interior_of() const { return nullptr; }
+
+  protected:
+    // Media are owned through MediumPtr (made by make_shared, which destroys the concrete type)
+    // or made in a path's scratch memory, which destroys nothing: no virtual destructor, so that
+    // the latter is allowed.
+    ~Medium() = default;
 };
 
 using MediumPtr = std::shared_ptr<const Medium>;

@@ -17,14 +17,16 @@ struct MediumInterface {
 };
 
 // The medium a ray leaving surface point si in direction w travels through, given the medium
-// the path was in before reaching si. A material's own interior medium takes precedence inside
-// its surface; leaving it, a path returns to the shape's outside medium (vacuum without a
-// MediumInterface).
+// the path was in before reaching si. A material's own interior medium (si.interior, set by
+// shade()) takes precedence inside its surface; leaving it, a path returns to the shape's outside
+// medium (vacuum without a MediumInterface). A path already inside keeps its medium, which may be
+// one the material made for the point where the path entered (material.h).
 inline const Medium *medium_after(const SurfaceInteraction &si, Vec3f w, const Medium *current) {
     const bool outwards = dot(w, si.n) > 0;
-    if (const Medium *interior = si.material ? si.material->interior_medium() : nullptr) {
-        if (!outwards) return interior;
-        if (current != interior) return current;
+    if (si.interior) {
+        const bool inside = current && (current == si.interior || current->interior_of() == si.material);
+        if (!outwards) return inside ? current : si.interior;
+        if (!inside) return current;
         return si.medium_interface ? si.medium_interface->outside : nullptr;
     }
     if (!si.medium_interface) return current;

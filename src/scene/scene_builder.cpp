@@ -286,7 +286,7 @@ void analyse_features(const SceneDescription &d, Scene &scene) {
         f.absorbing_interiors |= m->has_interior_absorption();
     }
     f.media = !scene.media.empty();
-    for (const MaterialPtr &m : scene.materials) f.media |= m->interior_medium() != nullptr;
+    for (const MaterialPtr &m : scene.materials) f.media |= m->has_interior_medium();
     bool non_specular_surfaces = false;
     for (const MaterialPtr &m : scene.materials) non_specular_surfaces |= m->has_non_specular_lobe();
     f.caustic_paths = f.specular_surfaces && non_specular_surfaces && !scene.lights.empty();
