@@ -176,8 +176,10 @@ DisneyMaterial::DisneyMaterial(DisneyTextures textures, SpectrumPtr eta, bool th
     : textures_(std::move(textures)), eta_(std::move(eta)), reference_eta_((*eta_)(FraunhoferD)),
       thin_(thin), sigma_a_(thin ? nullptr : std::move(sigma_a)),
       subsurface_(thin ? DisneySubsurface() : std::move(subsurface)) {
-    if (subsurface_.scatter_distance)
-        min_scatter_distance_ = MinScatterDistanceFraction * subsurface_.scatter_distance->max_value();
+    if (auto *d = dynamic_cast<const ConstantSpectrumTexture *>(subsurface_.scatter_distance.get()))
+        min_scatter_distance_ = MinScatterDistanceFraction * d->spectrum()->max_value();
+    else if (subsurface_.scatter_distance)
+        min_scatter_distance_ = -1;
     if (dynamic_cast<const ConstantSpectrumTexture *>(textures_.base_color.get()))
         constant_luminance_ = luminance(*textures_.base_color, TextureEvalContext());
 
@@ -247,10 +249,14 @@ DisneySubsurfaceProfile DisneyMaterial::subsurface_profile(const SurfaceInteract
         return DipoleProfile(subsurface_.sigma_a->sample(lambda) * subsurface_.scale,
                              subsurface_.sigma_s_reduced->sample(lambda) * subsurface_.scale, reference_eta_);
     SampledSpectrum albedo = textures_.base_color->evaluate(TextureEvalContext(si), lambda);
-    SampledSpectrum d = subsurface_.scatter_distance->sample(lambda);
+    SampledSpectrum d = subsurface_.scatter_distance->evaluate(TextureEvalContext(si), lambda);
+    // A textured distance has its floor set from the widest of the path's channels here (and a
+    // point where all are zero gets a tiny spread: the BRDF limit).
+    float floor = min_scatter_distance_;
+    if (floor < 0) floor = std::max(MinScatterDistanceFraction * d.max_value(), 1e-6f);
     for (int i = 0; i < NumWavelengths; ++i) {
         albedo[i] = clamp(albedo[i], 0.f, 1.f);
-        d[i] = std::max(d[i], min_scatter_distance_);
+        d[i] = std::max(d[i], floor);
     }
     if (subsurface_.model == SubsurfaceModel::Diffusion) return NormalizedDiffusionProfile(albedo, d);
     DipoleCoefficients c = dipole_coefficients(albedo, d, reference_eta_);
@@ -261,7 +267,7 @@ const Medium *DisneyMaterial::interior_medium(const SurfaceInteraction &si, cons
                                              ScratchBuffer &scratch) const {
     if (subsurface_.medium || !has_interior_medium()) return subsurface_.medium.get();
     const SampledSpectrum albedo = textures_.base_color->evaluate(TextureEvalContext(si), lambda);
-    const SampledSpectrum d = subsurface_.scatter_distance->sample(lambda);
+    const SampledSpectrum d = subsurface_.scatter_distance->evaluate(TextureEvalContext(si), lambda);
     SampledSpectrum sigma_s(0.f), sigma_a(0.f);
     if (subsurface_.walk_absorption) sigma_a = subsurface_.walk_absorption->sample(lambda);
     for (int i = 0; i < NumWavelengths; ++i) {
@@ -319,16 +325,17 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
         SpectrumTexturePtr scatter_distance =
             params.get_spectrum_texture_or_null("scatterDistance", SpectrumType::Unbounded, textures);
         if (!scatter_distance) return sub;
-        auto *distance = dynamic_cast<const ConstantSpectrumTexture *>(scatter_distance.get());
-        if (!distance)
-            throw InputError(params.location("scatterDistance"), "\"scatterDistance\" must be a constant");
-        float lo, hi;
-        spectrum_range(*distance->spectrum(), &lo, &hi);
-        if (!(lo >= 0 && std::isfinite(hi)))
-            throw InputError(params.location("scatterDistance"), "\"scatterDistance\" must be non-negative");
-        if (hi == 0) return sub;  // the diffuse BRDF
+        // A constant is checked here; a texture's negative values are read as 0 (textures are
+        // not range-checked, as for the other parameters).
+        if (auto *distance = dynamic_cast<const ConstantSpectrumTexture *>(scatter_distance.get())) {
+            float lo, hi;
+            spectrum_range(*distance->spectrum(), &lo, &hi);
+            if (!(lo >= 0 && std::isfinite(hi)))
+                throw InputError(params.location("scatterDistance"), "\"scatterDistance\" must be non-negative");
+            if (hi == 0) return sub;  // the diffuse BRDF
+        }
         sub.enabled = true;
-        sub.scatter_distance = distance->spectrum();
+        sub.scatter_distance = std::move(scatter_distance);
     }
     if (params.has("cavityFade")) {
         if (sub.model == SubsurfaceModel::RandomWalk)
@@ -345,8 +352,10 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
     if (sub.model == SubsurfaceModel::RandomWalk) {
         // The interior takes over the solid's absorption: one volume for a constant base colour,
         // one per entry point for a textured one.
-        if (auto *albedo = dynamic_cast<const ConstantSpectrumTexture *>(base_color.get()))
-            sub.medium = create_random_walk_medium(albedo->spectrum(), sub.scatter_distance, interior_sigma_a);
+        auto *albedo = dynamic_cast<const ConstantSpectrumTexture *>(base_color.get());
+        auto *distance = dynamic_cast<const ConstantSpectrumTexture *>(sub.scatter_distance.get());
+        if (albedo && distance)
+            sub.medium = create_random_walk_medium(albedo->spectrum(), distance->spectrum(), interior_sigma_a);
         else
             sub.walk_absorption = interior_sigma_a;
         interior_sigma_a = nullptr;

@@ -54,12 +54,13 @@ enum class SubsurfaceModel { RandomWalk, Diffusion, Dipole };
 struct DisneySubsurface {
     bool enabled = false;
     SubsurfaceModel model = SubsurfaceModel::RandomWalk;
-    // Random walk: the interior volume, or null when baseColor is a texture; then each entry
-    // point gets its own (DisneyMaterial::interior_medium), with walk_absorption (the solid's
+    // Random walk: the interior volume, or null when baseColor or scatterDistance is a texture;
+    // then each entry point gets its own (DisneyMaterial::interior_medium), with walk_absorption (the solid's
     // Beer-Lambert absorption, or null) added.
     MediumPtr medium;
     SpectrumPtr walk_absorption;
-    SpectrumPtr scatter_distance; // diffusion, and dipole without a preset: d per wavelength
+    // Random walk, diffusion, and dipole without a preset: d per wavelength, a value or a texture.
+    SpectrumTexturePtr scatter_distance;
     // Dipole with a preset: Jensen's coefficients (mm^-1) and the scene units' conversion.
     SpectrumPtr sigma_a, sigma_s_reduced;
     float scale = 1;
@@ -93,8 +94,8 @@ class DisneyMaterial final : public Material {
         return subsurface_.enabled && subsurface_.model == SubsurfaceModel::RandomWalk;
     }
     const Medium *interior_medium() const override { return subsurface_.medium.get(); }
-    // With a textured baseColor, the random walk's volume for a path entering at si: the
-    // coefficients of the base colour there, kept for the whole walk (as Cycles and Arnold do; the
+    // With a textured baseColor or scatterDistance, the random walk's volume for a path entering
+    // at si: the coefficients of the base colour and scatter distance there, kept for the whole walk (as Cycles and Arnold do; the
     // volume is not resampled as the walk moves under other colours).
     const Medium *interior_medium(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                                   ScratchBuffer &scratch) const override;
@@ -134,7 +135,8 @@ class DisneyMaterial final : public Material {
     bool thin_;
     SpectrumPtr sigma_a_;
     DisneySubsurface subsurface_;
-    // Profile models: no channel's scatter distance goes below this (see subsurface_profile).
+    // Profile models: no channel's scatter distance goes below this (see subsurface_profile);
+    // negative for a textured scatter distance, whose floor is set per point.
     float min_scatter_distance_ = 0;
     // The base colour's luminance when the base colour is a constant (else negative: computed
     // per point, and only when a tint needs it).

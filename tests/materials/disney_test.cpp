@@ -1129,6 +1129,43 @@ TEST_F(DisneyMaterialTest, TexturedRandomWalkMakesTheVolumeOfTheEntryPoint) {
     EXPECT_EQ(medium_after(boundary, -boundary.n, nullptr), boundary.interior);
 }
 
+// A textured scatter distance is read at the entry point, by the profiles and by the random
+// walk (whose volume is then made per point even with a constant base colour): each matches the
+// material with the constant distance found there.
+TEST_F(DisneyMaterialTest, TexturedScatterDistanceIsReadAtTheEntryPoint) {
+    ParameterDictionary checks = dictionary({numbers("float", "uscale", {2}, 2), numbers("spectrum", "tex1", {0.1}, 3),
+                                             numbers("spectrum", "tex2", {0.4}, 4)});
+    textures_.unbounded["spread"] =
+        create_spectrum_texture("checkerboard", {}, checks, SpectrumType::Unbounded, textures_, directive_location());
+    for (const char *model : {"randomwalk", "diffusion"}) {
+        auto textured = create({strings("string", "subsurface", {model}, 2), strings("texture", "scatterDistance", {"spread"}, 3),
+                                numbers("spectrum", "baseColor", {0.6}, 4)});
+        EXPECT_TRUE(textured->has_subsurface()) << model;
+        int different = 0;
+        float first_radius = 0;
+        for (float u : {0.25f, 0.75f}) {
+            const SurfaceInteraction si = surface_at(u, 0.25f);
+            const float d = textures_.unbounded["spread"]->evaluate(TextureEvalContext(si), lambda_)[0];
+            auto constant = create({strings("string", "subsurface", {model}, 2), numbers("spectrum", "scatterDistance", {d}, 3),
+                                    numbers("spectrum", "baseColor", {0.6}, 4)});
+            if (std::string(model) == "randomwalk") {
+                EXPECT_FALSE(textured->interior_medium());
+                const Medium *medium = textured->interior_medium(si, lambda_, scratch_);
+                ASSERT_TRUE(medium);
+                const Medium &reference = *constant->interior_medium();
+                EXPECT_NEAR(medium->sigma_s(lambda_)[0], reference.sigma_s(lambda_)[0], 1e-5f * reference.sigma_s(lambda_)[0]);
+                EXPECT_NEAR(medium->sigma_a(lambda_)[0], reference.sigma_a(lambda_)[0], 1e-5f * reference.sigma_a(lambda_)[0]);
+            } else {
+                const float radius = as_profile(textured->subsurface_profile(si, lambda_)).max_radius(0);
+                EXPECT_FLOAT_EQ(radius, as_profile(constant->subsurface_profile(si, lambda_)).max_radius(0));
+                if (u == 0.25f) first_radius = radius;
+                else different += radius != first_radius;
+            }
+        }
+        if (std::string(model) == "diffusion") EXPECT_EQ(different, 1);
+    }
+}
+
 TEST_F(DisneyMaterialTest, SubsurfaceModels) {
     // The default is the random walk.
     auto walk = create({numbers("spectrum", "scatterDistance", {0.5}, 2)});
