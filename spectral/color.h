@@ -52,6 +52,9 @@ inline RGB clamp_zero(const RGB &c) {
     return {std::max(0.f, c.r), std::max(0.f, c.g), std::max(0.f, c.b)};
 }
 
+// IEC 61966-2-1 sRGB decoding of one 8-bit-style value in [0, 1] to linear.
+float srgb_to_linear(float v);
+
 // Row-major 3x3 matrix acting on column vectors.
 struct Matrix3 {
     std::array<std::array<float, 3>, 3> m{};

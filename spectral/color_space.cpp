@@ -4,6 +4,7 @@
 #include "spectral/named_spectra.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -98,6 +99,11 @@ XYZ sampled_spectrum_to_xyz(const SampledSpectrum &s, const SampledWavelengths &
 
 float sampled_spectrum_to_y(const SampledSpectrum &s, const SampledWavelengths &lambda) {
     return safe_div(cie_y().sample(lambda) * s, lambda.pdf()).average() / CIE_Y_integral;
+}
+
+float srgb_to_linear(float v) {
+    if (v <= 0.04045f) return v / 12.92f;
+    return std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
 } // namespace caustica

@@ -1,21 +1,12 @@
 #include "lights/rgb_image.h"
 
 #include "openimageio/openimageio_plugin.h"
+#include "spectral/color.h"
 
 #include <cmath>
 #include <stdexcept>
 
 namespace caustica {
-
-namespace {
-
-// IEC 61966-2-1 sRGB decoding.
-float srgb_to_linear(float v) {
-    if (v <= 0.04045f) return v / 12.92f;
-    return std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
-}  // namespace
 
 RGBImage read_rgb_image(const std::string &filename) {
     DecodedImage decoded = read_image_file(filename);

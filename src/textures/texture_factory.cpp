@@ -2,8 +2,10 @@
 
 #include "params/constant_textures.h"
 #include "params/parameters.h"
+#include "spectral/color_space.h"
 #include "textures/bilerp_texture.h"
 #include "textures/checkerboard_texture.h"
+#include "textures/image_texture.h"
 #include "textures/mix_texture.h"
 #include "textures/scale_texture.h"
 
@@ -15,8 +17,7 @@ namespace caustica {
 namespace {
 
 // pbrt-v4 texture types Caustica does not implement yet (see texture_factory.h).
-constexpr std::array UnsupportedTypes = {"imagemap", "ptex", "fbm", "wrinkled", "windy",
-                                         "marble", "dots", "directionmix"};
+constexpr std::array UnsupportedTypes = {"ptex", "fbm", "wrinkled", "windy", "marble", "dots", "directionmix"};
 constexpr float UnsupportedTextureValue = 0.5f;
 
 bool is_unsupported(const std::string &type) {
@@ -110,6 +111,9 @@ FloatTexturePtr create_float_texture(const std::string &type, const Transform &r
     FloatTexturePtr result;
     if (type == "constant")
         result = std::make_shared<ConstantFloatTexture>(params.get_one_float("value", 1));
+    else if (type == "imagemap")
+        result = std::make_shared<FloatImageTexture>(
+            read_image_lookup(create_mapping_2d(render_from_texture, params), params, 1, loc));
     else
         result = create_composite<FloatTexture>(type, render_from_texture, params,
                                                 FloatChildren{params, textures}, textures, loc);
@@ -127,6 +131,12 @@ SpectrumTexturePtr create_spectrum_texture(const std::string &type,
     if (type == "constant")
         result = std::make_shared<ConstantSpectrumTexture>(params.get_one_spectrum(
             "value", std::make_shared<ConstantSpectrum>(1.f), spectrum_type));
+    else if (type == "imagemap")
+        // Image files carry no colour space Caustica reads; nearly all are sRGB (as pbrt-v4
+        // assumes without metadata).
+        result = std::make_shared<SpectrumImageTexture>(
+            read_image_lookup(create_mapping_2d(render_from_texture, params), params, 3, loc), spectrum_type,
+            RGBColorSpace::srgb());
     else
         result = create_composite<SpectrumTexture>(type, render_from_texture, params,
                                                    SpectrumChildren{params, textures, spectrum_type},

@@ -1,13 +1,13 @@
 // Creates textures from `Texture "name" "float"|"spectrum" "type" ...` directives, with
 // pbrt-v4's parameters and defaults. Supported: "constant" ("value"), "scale" ("tex" x
 // "scale"), "mix" ((1 - "amount") "tex1" + "amount" "tex2"), "checkerboard" ("tex1"/"tex2",
-// "dimension" 2 or 3), "bilerp" ("v00" "v10" "v01" "v11"); 2D ones take pbrt's "mapping"
-// ("uv" with "uscale" "vscale" "udelta" "vdelta", "spherical", "cylindrical", "planar" with
-// "v1" "v2" "udelta" "vdelta").
+// "dimension" 2 or 3), "bilerp" ("v00" "v10" "v01" "v11"), "imagemap" (image_texture.h); 2D
+// ones take pbrt's "mapping" ("uv" with "uscale" "vscale" "udelta" "vdelta", "spherical",
+// "cylindrical", "planar" with "v1" "v2" "udelta" "vdelta").
 //
-// pbrt's other texture types ("imagemap", "ptex", "fbm", "wrinkled", "windy", "marble",
-// "dots", "directionmix") are not supported yet: they produce a warning naming the type and a
-// constant 0.5, so scenes using them still render. An unknown type is an InputError.
+// pbrt's other texture types ("ptex", "fbm", "wrinkled", "windy", "marble", "dots",
+// "directionmix") are not supported yet: they produce a warning naming the type and a constant
+// 0.5, so scenes using them still render. An unknown type is an InputError.
 #pragma once
 
 #include "core/error.h"

@@ -126,7 +126,6 @@ TEST_F(TextureTest, SpectrumTextures) {
 }
 
 TEST_F(TextureTest, UnsupportedTypesFallBackToHalf) {
-    EXPECT_FLOAT_EQ(eval_float("imagemap", {strings("string", "filename", {"x.png"}, 2)}, at_uv(0.3f, 0.3f)), 0.5f);
     EXPECT_FLOAT_EQ(eval_float("fbm", {}, at_uv(0.3f, 0.3f)), 0.5f);
 }
 

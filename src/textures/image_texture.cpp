@@ -1,0 +1,205 @@
+#include "textures/image_texture.h"
+
+#include "core/error.h"
+#include "openimageio/openimageio_plugin.h"
+#include "params/parameters.h"
+#include "spectral/color.h"
+#include "spectral/color_space.h"
+#include "spectral/rgb_spectrum.h"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <tuple>
+
+namespace caustica {
+
+TexelImage::TexelImage(int width, int height, int channels, std::vector<float> texels)
+    : width_(width), height_(height), channels_(channels), texels_(std::move(texels)) {}
+
+float TexelImage::texel(int x, int y, int c, ImageWrap wrap) const {
+    switch (wrap) {
+    case ImageWrap::Repeat:
+        x = ((x % width_) + width_) % width_;
+        y = ((y % height_) + height_) % height_;
+        break;
+    case ImageWrap::Clamp:
+        x = std::clamp(x, 0, width_ - 1);
+        y = std::clamp(y, 0, height_ - 1);
+        break;
+    case ImageWrap::Black:
+        if (x < 0 || x >= width_ || y < 0 || y >= height_) return 0;
+        break;
+    case ImageWrap::OctahedralSphere:
+        // The equal-area octahedral map of a sphere (environment maps): stepping off one edge
+        // re-enters at the mirrored position on the same edge.
+        if (x < 0) {
+            x = -x - 1;
+            y = height_ - 1 - y;
+        } else if (x >= width_) {
+            x = 2 * width_ - 1 - x;
+            y = height_ - 1 - y;
+        }
+        if (y < 0) {
+            x = width_ - 1 - x;
+            y = -y - 1;
+        } else if (y >= height_) {
+            x = width_ - 1 - x;
+            y = 2 * height_ - 1 - y;
+        }
+        x = std::clamp(x, 0, width_ - 1);
+        y = std::clamp(y, 0, height_ - 1);
+        break;
+    }
+    return texels_[(size_t(y) * width_ + x) * channels_ + c];
+}
+
+void TexelImage::lookup(Vec2f st, ImageWrap wrap, bool nearest, float *out) const {
+    // Continuous texel coordinates with texel centres at half-integers, and t = 0 at the bottom.
+    const double x = double(st.x) * width_, y = (1 - double(st.y)) * height_;
+    if (nearest) {
+        const int xi = int(std::floor(x)), yi = int(std::floor(y));
+        for (int c = 0; c < channels_; ++c) out[c] = texel(xi, yi, c, wrap);
+        return;
+    }
+    const double xs = x - 0.5, ys = y - 0.5;
+    const int x0 = int(std::floor(xs)), y0 = int(std::floor(ys));
+    const float dx = float(xs - x0), dy = float(ys - y0);
+    for (int c = 0; c < channels_; ++c)
+        out[c] = (1 - dx) * (1 - dy) * texel(x0, y0, c, wrap) + dx * (1 - dy) * texel(x0 + 1, y0, c, wrap) +
+                 (1 - dx) * dy * texel(x0, y0 + 1, c, wrap) + dx * dy * texel(x0 + 1, y0 + 1, c, wrap);
+}
+
+float FloatImageTexture::evaluate(const TextureEvalContext &ctx) const {
+    float v = 0;
+    lookup_.image->lookup(lookup_.mapping.map(ctx), lookup_.wrap, lookup_.nearest, &v);
+    v *= lookup_.scale;
+    return std::max(0.f, lookup_.invert ? 1 - v : v);
+}
+
+SampledSpectrum SpectrumImageTexture::evaluate(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const {
+    float v[3];
+    lookup_.image->lookup(lookup_.mapping.map(ctx), lookup_.wrap, lookup_.nearest, v);
+    RGB rgb = RGB{v[0], v[1], v[2]} * lookup_.scale;
+    if (lookup_.invert) rgb = RGB{1, 1, 1} - rgb;
+    rgb = clamp_zero(rgb);
+    switch (type_) {
+    case SpectrumType::Albedo:
+        return RGBAlbedoSpectrum(*color_space_, {std::min(rgb.r, 1.f), std::min(rgb.g, 1.f), std::min(rgb.b, 1.f)})
+            .sample(lambda);
+    case SpectrumType::Unbounded:
+        return RGBUnboundedSpectrum(*color_space_, rgb).sample(lambda);
+    case SpectrumType::Illuminant:
+        return RGBIlluminantSpectrum(*color_space_, rgb).sample(lambda);
+    }
+    return {};
+}
+
+namespace {
+
+// How an 8-bit file's values map to linear ones (pbrt-v4's ColorEncoding).
+struct Encoding {
+    enum Kind { Linear, SRGB, Gamma } kind = SRGB;
+    float gamma = 1;
+    float decode(float v) const {
+        if (kind == SRGB) return srgb_to_linear(v);
+        if (kind == Gamma) return std::pow(std::max(v, 0.f), gamma);
+        return v;
+    }
+};
+
+Encoding read_encoding(const ParameterDictionary &params) {
+    const std::string name = params.get_one_string("encoding", "sRGB");
+    if (name == "sRGB") return {Encoding::SRGB};
+    if (name == "linear") return {Encoding::Linear};
+    float gamma = 0;
+    char rest = 0;
+    if (std::sscanf(name.c_str(), "gamma %f %c", &gamma, &rest) == 1 && gamma > 0 && std::isfinite(gamma))
+        return {Encoding::Gamma, gamma};
+    throw InputError(params.location("encoding"),
+                     "\"encoding\" must be \"sRGB\", \"linear\" or \"gamma <exponent>\", not \"" + name + "\"");
+}
+
+// The texels of `path` with `channels` channels: for 3, R, G and B (a grey image's one channel
+// three times); for 1, the first channel, as pbrt-v4's float textures read it.
+std::shared_ptr<const TexelImage> decode_texels(const std::string &path, int channels, Encoding encoding) {
+    const DecodedImage decoded = read_image_file(path);
+    if (decoded.width <= 0 || decoded.height <= 0 || decoded.channels <= 0)
+        throw std::runtime_error("image \"" + path + "\" has no pixels");
+    int source[3] = {0, 0, 0};
+    if (channels == 3 && decoded.channels >= 3) {
+        source[0] = decoded.channel_index("R"), source[1] = decoded.channel_index("G"),
+        source[2] = decoded.channel_index("B");
+        if (source[0] < 0 || source[1] < 0 || source[2] < 0) source[0] = 0, source[1] = 1, source[2] = 2;
+    }
+    // Float files hold linear values; the encoding is for integer-coded ones.
+    const bool decode = !decoded.float_format;
+    std::vector<float> texels(size_t(decoded.width) * decoded.height * channels);
+    for (int y = 0; y < decoded.height; ++y)
+        for (int x = 0; x < decoded.width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                float v = decoded.at(x, y, source[c]);
+                if (!std::isfinite(v))
+                    throw std::runtime_error("image \"" + path + "\" has infinite or not-a-number texels");
+                texels[(size_t(y) * decoded.width + x) * channels + c] = decode ? encoding.decode(v) : v;
+            }
+    return std::make_shared<TexelImage>(decoded.width, decoded.height, channels, std::move(texels));
+}
+
+// Textures that read the same file the same way share its texels (scenes often use one image
+// for several materials). Scene building is single-threaded, the lock is for safety only.
+std::shared_ptr<const TexelImage> cached_texels(const std::string &path, int channels, Encoding encoding) {
+    static std::mutex mutex;
+    static std::map<std::tuple<std::string, int, int, float>, std::weak_ptr<const TexelImage>> cache;
+    std::lock_guard lock(mutex);
+    auto key = std::tuple{path, channels, int(encoding.kind), encoding.gamma};
+    if (auto image = cache[key].lock()) return image;
+    auto image = decode_texels(path, channels, encoding);
+    cache[key] = image;
+    return image;
+}
+
+} // namespace
+
+ImageLookup read_image_lookup(TextureMapping2D mapping, const ParameterDictionary &params, int channels,
+                              const SourceLocation &loc) {
+    ImageLookup lookup;
+    lookup.mapping = std::move(mapping);
+    const std::string filename = params.get_one_string("filename", "");
+    if (filename.empty()) throw InputError(loc, "imagemap: no \"filename\" given");
+    const Encoding encoding = read_encoding(params);
+    const std::string path = params.file_path("filename", filename);
+    try {
+        lookup.image = cached_texels(path, channels, encoding);
+    } catch (const std::runtime_error &e) {
+        throw InputError(params.location("filename"), e.what());
+    }
+    const std::string wrap = params.get_one_string("wrap", "repeat");
+    if (wrap == "repeat") lookup.wrap = ImageWrap::Repeat;
+    else if (wrap == "black") lookup.wrap = ImageWrap::Black;
+    else if (wrap == "clamp") lookup.wrap = ImageWrap::Clamp;
+    else if (wrap == "octahedralsphere") lookup.wrap = ImageWrap::OctahedralSphere;
+    else
+        throw InputError(params.location("wrap"),
+                         "\"wrap\" must be \"repeat\", \"black\", \"clamp\" or \"octahedralsphere\", not \"" + wrap +
+                             "\"");
+    const std::string filter = params.get_one_string("filter", "bilinear");
+    if (filter == "point") {
+        lookup.nearest = true;
+    } else if (filter == "trilinear" || filter == "ewa" || filter == "EWA") {
+        warning(params.location("filter"), "\"" + filter +
+                                               "\" filtering averages over a pixel's footprint, which needs ray "
+                                               "differentials that Caustica does not track; using \"bilinear\"");
+        params.get_one_float("maxanisotropy", 8); // EWA's, read with it
+    } else if (filter != "bilinear") {
+        throw InputError(params.location("filter"),
+                         "\"filter\" must be \"point\", \"bilinear\", \"trilinear\" or \"ewa\", not \"" + filter + "\"");
+    }
+    lookup.scale = params.get_one_float("scale", 1);
+    if (!std::isfinite(lookup.scale)) throw InputError(params.location("scale"), "\"scale\" must be finite");
+    lookup.invert = params.get_one_bool("invert", false);
+    return lookup;
+}
+
+} // namespace caustica

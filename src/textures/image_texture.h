@@ -1,0 +1,82 @@
+// pbrt-v4's "imagemap" textures: an image file looked up at a 2D mapping's texture coordinates.
+//
+// Lookups interpolate bilinearly between the four nearest texels ("bilinear", pbrt's default) or
+// take the nearest one ("point"). pbrt's mip-mapped filters ("trilinear", "ewa") average over the
+// footprint of a pixel, which needs ray differentials that Caustica does not track; they fall
+// back to bilinear lookups with a warning, and antialiasing is left to pixel sampling, as for
+// the procedural textures. As in pbrt-v4, t = 0 is the bottom row of the image, texels are
+// linear (8-bit files are decoded by their "encoding", sRGB unless stated), a value is scaled,
+// then inverted (1 - v) if asked, then clamped at zero; spectrum textures turn the RGB of a
+// lookup into a spectrum of the parameter's kind (albedo, unbounded, illuminant) in the file's
+// colour space (sRGB), and float textures read the first channel.
+#pragma once
+
+#include "core/error.h"
+#include "textures/texture.h"
+#include "textures/texture_mapping.h"
+
+#include <memory>
+#include <vector>
+
+namespace caustica {
+
+class ParameterDictionary;
+class RGBColorSpace;
+
+// What happens to texture coordinates outside [0, 1]: pbrt-v4's "wrap" modes.
+enum class ImageWrap { Repeat, Black, Clamp, OctahedralSphere };
+
+// An image's linear texels, 1 or 3 channels interleaved, rows from the top down.
+class TexelImage {
+  public:
+    TexelImage(int width, int height, int channels, std::vector<float> texels);
+    int channels() const { return channels_; }
+    // The interpolated channels at texture coordinates st (written to out[0 .. channels)).
+    void lookup(Vec2f st, ImageWrap wrap, bool nearest, float *out) const;
+
+  private:
+    // Texel (x, y)'s channel c, or 0 outside the image with ImageWrap::Black.
+    float texel(int x, int y, int c, ImageWrap wrap) const;
+
+    int width_, height_, channels_;
+    std::vector<float> texels_;
+};
+
+// The lookup settings an imagemap texture reads from its parameters.
+struct ImageLookup {
+    TextureMapping2D mapping;
+    std::shared_ptr<const TexelImage> image;
+    ImageWrap wrap = ImageWrap::Repeat;
+    bool nearest = false;
+    float scale = 1;
+    bool invert = false;
+};
+
+class FloatImageTexture final : public FloatTexture {
+  public:
+    explicit FloatImageTexture(ImageLookup lookup) : lookup_(std::move(lookup)) {}
+    float evaluate(const TextureEvalContext &ctx) const override;
+
+  private:
+    ImageLookup lookup_;
+};
+
+class SpectrumImageTexture final : public SpectrumTexture {
+  public:
+    SpectrumImageTexture(ImageLookup lookup, SpectrumType type, const RGBColorSpace &color_space)
+        : lookup_(std::move(lookup)), type_(type), color_space_(&color_space) {}
+    SampledSpectrum evaluate(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const override;
+
+  private:
+    ImageLookup lookup_;
+    SpectrumType type_;
+    const RGBColorSpace *color_space_;
+};
+
+// Reads an imagemap texture's parameters and its file (relative to the scene file), with
+// `channels` texels (1 for a float texture, 3 for a spectrum one), looked up through `mapping`.
+// Throws InputError at the parameter that is wrong or names an unreadable file.
+ImageLookup read_image_lookup(TextureMapping2D mapping, const ParameterDictionary &params, int channels,
+                              const SourceLocation &loc);
+
+} // namespace caustica

@@ -1,0 +1,169 @@
+// pbrt-v4's "imagemap" textures (src/textures/image_texture.h): lookups against texels written
+// here to files, wrap modes, scale and invert, the spectrum kinds, 8-bit decoding, and errors at
+// the parameter.
+#include "param_helpers.h"
+
+#include "core/error.h"
+#include "openimageio/openimageio_plugin.h"
+#include "spectral/color_space.h"
+#include "spectral/rgb_spectrum.h"
+#include "textures/texture_factory.h"
+
+#include <ImfRgbaFile.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <unistd.h>
+
+namespace caustica {
+namespace {
+
+using namespace caustica::testing;
+
+TextureEvalContext at_st(float s, float t) {
+    TextureEvalContext ctx;
+    ctx.uv = {s, t};
+    return ctx;
+}
+
+class ImageTextureTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        set_warnings_enabled(false);
+        dir_ = std::filesystem::temp_directory_path() / ("caustica-test-imagemap-" + std::to_string(getpid()));
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override {
+        set_warnings_enabled(true);
+        std::filesystem::remove_all(dir_);
+    }
+    // A 2x2 half-float EXR, rows from the top: (r, g, b) per texel, top-left first.
+    std::string write_exr(const std::string &name, const std::array<RGB, 4> &texels) {
+        const std::string path = (dir_ / name).string();
+        Imf::Rgba pixels[4];
+        for (int i = 0; i < 4; ++i) pixels[i] = Imf::Rgba(texels[i].r, texels[i].g, texels[i].b, 1);
+        Imf::RgbaOutputFile file(path.c_str(), 2, 2, Imf::WRITE_RGB);
+        file.setFrameBuffer(pixels, 1, 2);
+        file.writePixels(2);
+        return path;
+    }
+    FloatTexturePtr float_texture(std::vector<ParsedParameter> params) {
+        ParameterDictionary d = dictionary(std::move(params));
+        return create_float_texture("imagemap", {}, d, {}, directive_location());
+    }
+    SpectrumTexturePtr spectrum_texture(std::vector<ParsedParameter> params, SpectrumType type) {
+        ParameterDictionary d = dictionary(std::move(params));
+        return create_spectrum_texture("imagemap", {}, d, type, {}, directive_location());
+    }
+    // The line of the InputError that creating the float texture throws, or -1.
+    int error_line(std::vector<ParsedParameter> params) {
+        try {
+            float_texture(std::move(params));
+        } catch (const InputError &e) {
+            return e.location().line;
+        }
+        return -1;
+    }
+
+    std::filesystem::path dir_;
+    SampledWavelengths lambda_ = SampledWavelengths::sample_visible(0.3f);
+};
+
+// Texel values 0.25 (top left), 0.5 (top right), 0.75 (bottom left), 1 (bottom right) in red.
+const std::array<RGB, 4> Ramp = {RGB{0.25f, 0, 0}, RGB{0.5f, 0, 0}, RGB{0.75f, 0, 0}, RGB{1, 0, 0}};
+
+TEST_F(ImageTextureTest, BilinearLookupsWithTUpwards) {
+    auto tex = float_texture({strings("string", "filename", {write_exr("ramp.exr", Ramp)}, 2)});
+    // Texel centres: s = 0.25 or 0.75; t = 0.75 is the top row, 0.25 the bottom one.
+    EXPECT_FLOAT_EQ(tex->evaluate(at_st(0.25f, 0.75f)), 0.25f);
+    EXPECT_FLOAT_EQ(tex->evaluate(at_st(0.75f, 0.75f)), 0.5f);
+    EXPECT_FLOAT_EQ(tex->evaluate(at_st(0.25f, 0.25f)), 0.75f);
+    EXPECT_FLOAT_EQ(tex->evaluate(at_st(0.75f, 0.25f)), 1);
+    // Between the four centres, their average; between two, theirs.
+    EXPECT_FLOAT_EQ(tex->evaluate(at_st(0.5f, 0.5f)), 0.625f);
+    EXPECT_FLOAT_EQ(tex->evaluate(at_st(0.5f, 0.75f)), 0.375f);
+    // Repeat (the default): s = 0 lies halfway between the right column and the left one.
+    EXPECT_FLOAT_EQ(tex->evaluate(at_st(0, 0.75f)), 0.375f);
+    EXPECT_FLOAT_EQ(tex->evaluate(at_st(1.25f, -0.75f)), tex->evaluate(at_st(0.25f, 0.25f)));
+}
+
+TEST_F(ImageTextureTest, WrapModesFilterScaleAndInvert) {
+    const std::string file = write_exr("ramp.exr", Ramp);
+    auto clamp = float_texture({strings("string", "filename", {file}, 2), strings("string", "wrap", {"clamp"}, 3)});
+    EXPECT_FLOAT_EQ(clamp->evaluate(at_st(0, 0.75f)), 0.25f);
+    EXPECT_FLOAT_EQ(clamp->evaluate(at_st(3, -2)), 1);
+    auto black = float_texture({strings("string", "filename", {file}, 2), strings("string", "wrap", {"black"}, 3)});
+    EXPECT_FLOAT_EQ(black->evaluate(at_st(0, 0.75f)), 0.125f);  // half the left texel, half black
+    EXPECT_FLOAT_EQ(black->evaluate(at_st(2, 2)), 0);
+    auto point = float_texture({strings("string", "filename", {file}, 2), strings("string", "filter", {"point"}, 3)});
+    EXPECT_FLOAT_EQ(point->evaluate(at_st(0.49f, 0.51f)), 0.25f);
+    EXPECT_FLOAT_EQ(point->evaluate(at_st(0.51f, 0.49f)), 1);
+    // scale, then invert, then clamped at zero.
+    auto scaled = float_texture({strings("string", "filename", {file}, 2), numbers("float", "scale", {2}, 3)});
+    EXPECT_FLOAT_EQ(scaled->evaluate(at_st(0.25f, 0.75f)), 0.5f);
+    auto inverted = float_texture({strings("string", "filename", {file}, 2), numbers("float", "scale", {2}, 3),
+                                   boolean("invert", true, 4)});
+    EXPECT_FLOAT_EQ(inverted->evaluate(at_st(0.25f, 0.75f)), 0.5f);
+    EXPECT_FLOAT_EQ(inverted->evaluate(at_st(0.75f, 0.25f)), 0);
+    // The mapping's parameters apply: uscale 2 repeats the image twice across u.
+    auto tiled = float_texture({strings("string", "filename", {file}, 2), numbers("float", "uscale", {2}, 3)});
+    EXPECT_FLOAT_EQ(tiled->evaluate(at_st(0.125f + 0.5f, 0.75f)), 0.25f);
+}
+
+TEST_F(ImageTextureTest, SpectrumKindsAndChannels) {
+    const std::array<RGB, 4> colours = {RGB{0.8f, 0.4f, 0.2f}, RGB{0.1f, 0.5f, 0.9f}, RGB{2, 1, 0.5f}, RGB{0, 0, 0}};
+    const std::string file = write_exr("colours.exr", colours);
+    const RGBColorSpace &srgb = RGBColorSpace::srgb();
+    auto albedo = spectrum_texture({strings("string", "filename", {file}, 2)}, SpectrumType::Albedo);
+    auto unbounded = spectrum_texture({strings("string", "filename", {file}, 2)}, SpectrumType::Unbounded);
+    auto illuminant = spectrum_texture({strings("string", "filename", {file}, 2)}, SpectrumType::Illuminant);
+    const SampledSpectrum a = albedo->evaluate(at_st(0.75f, 0.75f), lambda_);
+    const SampledSpectrum expected_a = RGBAlbedoSpectrum(srgb, colours[1]).sample(lambda_);
+    // An albedo above 1 is clamped to 1; unbounded and illuminant keep it.
+    const SampledSpectrum clamped = albedo->evaluate(at_st(0.25f, 0.25f), lambda_);
+    const SampledSpectrum expected_clamped = RGBAlbedoSpectrum(srgb, RGB{1, 1, 0.5f}).sample(lambda_);
+    const SampledSpectrum u = unbounded->evaluate(at_st(0.25f, 0.25f), lambda_);
+    const SampledSpectrum expected_u = RGBUnboundedSpectrum(srgb, colours[2]).sample(lambda_);
+    const SampledSpectrum e = illuminant->evaluate(at_st(0.25f, 0.25f), lambda_);
+    const SampledSpectrum expected_e = RGBIlluminantSpectrum(srgb, colours[2]).sample(lambda_);
+    for (int i = 0; i < NumWavelengths; ++i) {
+        EXPECT_NEAR(a[i], expected_a[i], 1e-3f);
+        EXPECT_NEAR(clamped[i], expected_clamped[i], 1e-3f);
+        EXPECT_NEAR(u[i], expected_u[i], 2e-3f);
+        EXPECT_NEAR(e[i], expected_e[i], 2e-3f * expected_e[i] + 1e-4f);
+    }
+    // A float texture reads the first channel (red).
+    auto first = float_texture({strings("string", "filename", {file}, 2)});
+    EXPECT_NEAR(first->evaluate(at_st(0.25f, 0.75f)), 0.8f, 1e-3f);
+}
+
+// 8-bit files are decoded by "encoding": sRGB by default, or linear, or a gamma.
+TEST_F(ImageTextureTest, EightBitEncodings) {
+    const std::string path = (dir_ / "grey.png").string();
+    const uint8_t texels[4 * 3] = {128, 128, 128, 128, 128, 128, 128, 128, 128, 128, 128, 128};
+    ASSERT_EQ(openimageio().write_rgb8(path, 2, 2, texels), "");
+    const float encoded = 128.f / 255;
+    EXPECT_NEAR(float_texture({strings("string", "filename", {path}, 2)})->evaluate(at_st(0.5f, 0.5f)),
+                srgb_to_linear(encoded), 1e-5f);
+    EXPECT_NEAR(float_texture({strings("string", "filename", {path}, 2), strings("string", "encoding", {"linear"}, 3)})
+                    ->evaluate(at_st(0.5f, 0.5f)),
+                encoded, 1e-5f);
+    EXPECT_NEAR(float_texture({strings("string", "filename", {path}, 2), strings("string", "encoding", {"gamma 2.2"}, 3)})
+                    ->evaluate(at_st(0.5f, 0.5f)),
+                std::pow(encoded, 2.2f), 1e-5f);
+}
+
+TEST_F(ImageTextureTest, ErrorsPointAtTheParameter) {
+    const std::string file = write_exr("ramp.exr", Ramp);
+    EXPECT_EQ(error_line({}), 1);  // no filename: the directive
+    EXPECT_EQ(error_line({strings("string", "filename", {(dir_ / "missing.png").string()}, 5)}), 5);
+    EXPECT_EQ(error_line({strings("string", "filename", {file}, 2), strings("string", "wrap", {"mirror"}, 6)}), 6);
+    EXPECT_EQ(error_line({strings("string", "filename", {file}, 2), strings("string", "filter", {"gaussian"}, 7)}), 7);
+    EXPECT_EQ(error_line({strings("string", "filename", {file}, 2), strings("string", "encoding", {"gamma -1"}, 8)}), 8);
+    EXPECT_EQ(error_line({strings("string", "filename", {file}, 2), strings("string", "filter", {"ewa"}, 3),
+                          numbers("float", "maxanisotropy", {16}, 4)}),
+              -1);
+}
+
+} // namespace
+} // namespace caustica
