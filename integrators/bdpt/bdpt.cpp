@@ -97,6 +97,7 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
     const Scene &scene = ctx.scene;
     Sampler &sampler = ctx.sample.sampler;
     const Material *absorbing_interior = nullptr;
+    FreeFlightMIS free_flight;
     // Vertices that count towards max_count: a jump's exit shares its entry's (see after_jump).
     auto counted = [&] { return count - path[count - 1].jumps; };
     while (counted() < max_count) {
@@ -104,7 +105,7 @@ int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float 
         ++ctx.sample.rays;
         bool hit = scene.intersect(ray, &si);
         PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               ctx.lambda, sampler);
+                                               ctx.lambda, sampler, free_flight);
         beta *= segment.weight;
         if (beta.is_black()) break;
         PathVertex &prev = path[count - 1];

@@ -156,6 +156,7 @@ void trace_light_path(const LightPathContext &ctx) {
     SampledSpectrum flux = les->L * (cos_origin / (sampled->pmf * les->pdf_pos * les->pdf_dir));
     SampledSpectrum beta(1.f);
     const Material *absorbing_interior = nullptr;
+    FreeFlightMIS free_flight;
     // The path starts in the light's medium (for an area light, that on its shape's outside).
     const Medium *medium = light.medium();
     Ray ray = les->ray;
@@ -168,7 +169,7 @@ void trace_light_path(const LightPathContext &ctx) {
         // Free flight through the medium and absorption inside an absorbing dielectric, as in
         // the path tracer (a light inside such a dielectric is not detected: paths start clear).
         PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler);
+                                               lambda, sampler, free_flight);
         beta *= segment.weight;
         if (beta.is_black()) break;
         if (segment.scattered) {

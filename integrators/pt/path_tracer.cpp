@@ -30,6 +30,7 @@ struct PathState {
     LightSampleContext prev_ctx; // where that sample was taken
     const Material *absorbing_interior = nullptr;
     const Medium *medium = nullptr; // the participating medium the ray travels through
+    FreeFlightMIS free_flight;
 };
 
 // Russian roulette after the first bounces; false when the path ends.
@@ -82,7 +83,7 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWa
         bool hit = scene.intersect(ray, &si);
 
         PathSegment segment = traverse_segment(st.medium, st.absorbing_interior,
-                                               hit ? si.t * length(ray.d) : Infinity, lambda, sampler);
+                                               hit ? si.t * length(ray.d) : Infinity, lambda, sampler, st.free_flight);
         st.beta *= segment.weight;
         if (st.beta.is_black()) break;
         if (segment.scattered) {

@@ -139,6 +139,7 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
     LightSampleContext previous{};
     const Medium *medium = scene.camera_medium;
     const Material *absorbing_interior = nullptr;
+    FreeFlightMIS free_flight;
     Sampler &sampler = ctx.sampler;
     // Emission reached by BSDF sampling, weighted against next-event estimation as in the path
     // tracer (only glossy bounces can precede it: the path stops at diffuse surfaces), and left
@@ -155,7 +156,7 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
         ++ctx.rays;
         bool hit = scene.intersect(ray, &si);
         PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler);
+                                               lambda, sampler, free_flight);
         beta *= segment.weight;
         if (beta.is_black()) return;
         if (segment.scattered) {
@@ -237,12 +238,13 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
     // Area lights' paths leave into the medium outside their shape (the side they emit to).
     const Medium *medium = chosen->light->medium();
     const Material *absorbing_interior = nullptr;
+    FreeFlightMIS free_flight;
     for (int depth = 0; depth < max_depth; ++depth) {
         SurfaceInteraction si;
         ++ctx.rays;
         bool hit = scene.intersect(ray, &si);
         PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler);
+                                               lambda, sampler, free_flight);
         if (segment.scattered) {
             // Scattering in the medium: the event's weight sigma_s T / density stands where a
             // surface has f |cos| / pdf (the phase function is sampled exactly), and Russian

@@ -297,13 +297,14 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
     // its shape, the side it emits to).
     const Medium *medium = light.medium();
     const Material *absorbing_interior = nullptr;
+    FreeFlightMIS free_flight;
     int path_length = 0;
     while (true) {
         SurfaceInteraction si;
         ++ctx.pixel.rays;
         bool hit = scene.intersect(ray, &si);
         PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler);
+                                               lambda, sampler, free_flight);
         beta *= segment.weight;
         if (beta.is_black()) break;
         ScatteringPoint point;
@@ -642,6 +643,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     LightSampleContext previous{ray.o, Vec3f{}, Vec3f{}};
     const Medium *medium = scene.camera_medium;
     const Material *absorbing_interior = nullptr;
+    FreeFlightMIS free_flight;
     int path_length = 0;
     auto add = [&](const SampledSpectrum &contribution) {
         L += beta * in_group_measure(contribution, lambda.secondary_terminated(), ctx.hero_scale);
@@ -651,7 +653,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
         ++pixel.rays;
         bool hit = scene.intersect(ray, &si);
         PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler);
+                                               lambda, sampler, free_flight);
         beta *= segment.weight;
         if (beta.is_black()) break;
         if (!segment.scattered && !hit) {

@@ -16,7 +16,7 @@ class HomogeneousMedium final : public Medium {
     SampledSpectrum sigma_s(const SampledWavelengths &lambda) const override;
     const HenyeyGreenstein &phase() const override { return phase_; }
     SampledSpectrum transmittance(float distance, const SampledWavelengths &lambda) const override;
-    MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, float u_channel,
+    MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
                                 float u_distance) const override;
 
   private:
@@ -41,7 +41,7 @@ class SampledHomogeneousMedium final : public Medium {
     SampledSpectrum sigma_s(const SampledWavelengths &) const override { return sigma_s_; }
     const HenyeyGreenstein &phase() const override { return phase_; }
     SampledSpectrum transmittance(float distance, const SampledWavelengths &lambda) const override;
-    MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, float u_channel,
+    MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
                                 float u_distance) const override;
     const Material *interior_of() const override { return owner_; }
 

@@ -2,17 +2,13 @@
 // surface. Caustica's media are homogeneous (pbrt-v4's "homogeneous"); the interface is what the
 // integrators need from any medium, so that heterogeneous ones can be added beside it.
 //
-// Chromatic media and hero wavelengths: the distance to a scattering event is sampled from the
-// average of the NumWavelengths exponential densities (one wavelength's sigma_t picked at random
-// with a fresh random number, then an exponential step with it), and every wavelength is weighted
-// by its own f / (that average). This is the one-sample balance heuristic over the wavelengths
-// (Veach and Guibas 1995; for spectral rendering Wilkie et al. 2014, "Hero Wavelength Spectral
-// Sampling"), applied per event. Because the mixture does not depend on which wavelength is the
-// hero, each event is unbiased on its own and no path-level ratio needs to be carried (pbrt-v4's
-// r_u), which keeps light vertices and photons small; and since each component is one of the
-// mixture's terms, every weight is at most NumWavelengths * sigma_s / sigma_t <= 4. After
-// terminate_secondary() only the hero is sampled and weighted. A medium that does not scatter at
-// the carried wavelengths samples nothing and weights by the transmittance.
+// Chromatic media: a path carries NumWavelengths wavelengths, and the medium has a different
+// extinction for each. A medium samples a distance with the coefficients of one of them (the
+// subpath's "lane") and reports the event's density under every wavelength's coefficients; the
+// path combines the densities of all its events by multiple importance sampling over the
+// wavelengths (integrators/common/path_segment.h, FreeFlightMIS). A medium that does not scatter
+// at the carried wavelengths samples nothing: the event is the transmittance itself, with density
+// 1 for every wavelength.
 #pragma once
 
 #include "media/phase_function.h"
@@ -31,9 +27,10 @@ struct MediumEvent {
     // surface, or infinity) and t == t_max.
     bool scattered = false;
     float t = 0;
-    // Throughput factor of the event, f / density per wavelength: T(t) sigma_s(t) over the
-    // density of t when scattered, T(t_max) over the probability of passing otherwise.
-    SampledSpectrum weight{0.f};
+    // Per wavelength: the event's contribution f, T(t) sigma_s when scattered and T(t_max) when
+    // passing (zero at terminated wavelengths), and its density had that wavelength's
+    // coefficients sampled it, sigma_t T(t) and T(t_max) (all 1 when nothing was sampled).
+    SampledSpectrum f{0.f}, density{1.f};
 };
 
 class Medium {
@@ -44,8 +41,8 @@ class Medium {
     // Transmittance exp(-integral of sigma_t) along a straight segment of the given length.
     virtual SampledSpectrum transmittance(float distance, const SampledWavelengths &lambda) const = 0;
     // Samples where a ray entering the medium first scatters, within distance t_max (may be
-    // Infinity). u_channel picks the wavelength whose density is used, u_distance the distance.
-    virtual MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, float u_channel,
+    // Infinity), with the extinction of wavelength lambda[lane]; u_distance picks the distance.
+    virtual MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
                                         float u_distance) const = 0;
     // The material whose interior this medium is when the material made it for one entry point
     // (SampledHomogeneousMedium), else null.

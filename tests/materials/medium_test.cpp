@@ -120,8 +120,11 @@ TEST(HomogeneousMedium, TransmittanceIsBeerLambert) {
     EXPECT_EQ(clear.transmittance(Infinity, lambda).average(), 1.f) << "a clear medium over infinity is 0 * inf";
 }
 
-// Unbiasedness: E[weight; passed] = T(t_max) and E[weight; scattered] = integral of
-// sigma_s T(t) over [0, t_max] = sigma_s / sigma_t (1 - T(t_max)), per wavelength.
+// The event's f and densities, with the lane drawn uniformly and the balance heuristic over
+// the lanes, f / mean_k density_k (the weight of a subpath's first event, path_segment.h), is
+// unbiased per wavelength: E[weight; passed] = T(t_max) and E[weight; scattered] = integral of
+// sigma_s T(t) over [0, t_max] = sigma_s / sigma_t (1 - T(t_max)). Wrong densities or a
+// distance not drawn with the lane's extinction bias it.
 void check_free_flight(const HomogeneousMedium &medium, SampledWavelengths lambda, float t_max, uint64_t seed) {
     SampledSpectrum sigma_s = medium.sigma_s(lambda), sigma_t = medium.sigma_a(lambda) + sigma_s;
     const int carried = lambda.secondary_terminated() ? 1 : NumWavelengths;
@@ -129,14 +132,16 @@ void check_free_flight(const HomogeneousMedium &medium, SampledWavelengths lambd
     Rng rng(seed, 1);
     float max_scattered_ratio = 0, max_passed = 0;
     for (int n = 0; n < 400000; ++n) {
-        MediumEvent e = medium.sample_distance(t_max, lambda, rng.uniform(), rng.uniform());
-        ASSERT_FALSE(e.weight.has_non_finite());
+        const int lane = std::min(int(rng.uniform() * NumWavelengths), NumWavelengths - 1);
+        MediumEvent e = medium.sample_distance(t_max, lambda, lane, rng.uniform());
+        const SampledSpectrum weight = e.f / e.density.average();
+        ASSERT_FALSE(weight.has_non_finite());
         ASSERT_LE(e.t, t_max);
         for (int i = 0; i < NumWavelengths; ++i) {
-            passed[i].add(e.scattered ? 0 : e.weight[i]);
-            scattered[i].add(e.scattered ? e.weight[i] : 0);
-            if (e.scattered) max_scattered_ratio = std::max(max_scattered_ratio, e.weight[i] * sigma_t[i] / sigma_s[i]);
-            else max_passed = std::max(max_passed, e.weight[i]);
+            passed[i].add(e.scattered ? 0 : weight[i]);
+            scattered[i].add(e.scattered ? weight[i] : 0);
+            if (e.scattered) max_scattered_ratio = std::max(max_scattered_ratio, weight[i] * sigma_t[i] / sigma_s[i]);
+            else max_passed = std::max(max_passed, weight[i]);
         }
     }
     for (int i = 0; i < NumWavelengths; ++i) {
@@ -148,10 +153,10 @@ void check_free_flight(const HomogeneousMedium &medium, SampledWavelengths lambd
         expect_mean(passed[i], T, "passed, wavelength " + std::to_string(i));
         expect_mean(scattered[i], sigma_s[i] / sigma_t[i] * (1 - T), "scattered, wavelength " + std::to_string(i));
     }
-    // Each weight is a term of the mixture over the whole mixture: at most `carried` times
-    // sigma_s / sigma_t when scattering, `carried` when passing (medium.h).
-    EXPECT_LE(max_scattered_ratio, carried * (1 + 1e-4f));
-    EXPECT_LE(max_passed, carried * (1 + 1e-4f));
+    // Each weight is one lane's density over the mean of all: at most NumWavelengths times
+    // sigma_s / sigma_t when scattering, NumWavelengths when passing.
+    EXPECT_LE(max_scattered_ratio, NumWavelengths * (1 + 1e-4f));
+    EXPECT_LE(max_passed, NumWavelengths * (1 + 1e-4f));
 }
 
 TEST(HomogeneousMedium, FreeFlightSamplingIsUnbiasedPerWavelength) {
@@ -174,32 +179,38 @@ TEST(HomogeneousMedium, AnAbsorbingMediumWeightsByTransmittance) {
     Rng rng(2, 2);
     for (int n = 0; n < 1000; ++n) {
         float t_max = 3 * rng.uniform();
-        MediumEvent e = medium.sample_distance(t_max, lambda, rng.uniform(), rng.uniform());
+        MediumEvent e = medium.sample_distance(t_max, lambda, n % NumWavelengths, rng.uniform());
         ASSERT_FALSE(e.scattered);
         SampledSpectrum T = medium.transmittance(t_max, lambda);
-        for (int i = 0; i < NumWavelengths; ++i) ASSERT_FLOAT_EQ(e.weight[i], T[i]);
+        for (int i = 0; i < NumWavelengths; ++i) {
+            ASSERT_FLOAT_EQ(e.f[i], T[i]);
+            ASSERT_EQ(e.density[i], 1.f);
+        }
     }
 }
 
-TEST(HomogeneousMedium, FreeFlightDistancesFollowTheMixture) {
-    // Kolmogorov-Smirnov against the mixture's CDF F(t) = mean_k (1 - exp(-sigma_t,k t)) with an
-    // infinite segment (every sample scatters); 1.95 / sqrt(N) is the 1e-3 critical value.
+TEST(HomogeneousMedium, FreeFlightDistancesFollowTheLanesExtinction) {
+    // Kolmogorov-Smirnov against the lane's CDF F(t) = 1 - exp(-sigma_t,lane t) with an infinite
+    // segment (every sample scatters); 1.95 / sqrt(N) is the 1e-3 critical value.
     HomogeneousMedium medium(std::make_shared<LinearSpectrum>(0.2f, 3.f), std::make_shared<ConstantSpectrum>(0.5f), 1, 0);
     SampledWavelengths lambda = SampledWavelengths::sample_visible(0.77f);
     SampledSpectrum sigma_t = medium.sigma_a(lambda) + medium.sigma_s(lambda);
     Rng rng(4, 4);
     const int n = 50000;
     std::vector<float> t(n);
+    const int lane = 2;
     for (float &x : t) {
-        MediumEvent e = medium.sample_distance(Infinity, lambda, rng.uniform(), rng.uniform());
+        MediumEvent e = medium.sample_distance(Infinity, lambda, lane, rng.uniform());
         ASSERT_TRUE(e.scattered);
+        // The reported densities are each wavelength's exponential density there.
+        for (int k = 0; k < NumWavelengths; ++k)
+            ASSERT_NEAR(e.density[k], sigma_t[k] * std::exp(-sigma_t[k] * e.t), 1e-5f * sigma_t[k]);
         x = e.t;
     }
     std::sort(t.begin(), t.end());
     double d = 0;
     for (int i = 0; i < n; ++i) {
-        double F = 0;
-        for (int k = 0; k < NumWavelengths; ++k) F += (1 - std::exp(-double(sigma_t[k]) * t[i])) / NumWavelengths;
+        const double F = 1 - std::exp(-double(sigma_t[lane]) * t[i]);
         d = std::max({d, std::abs(F - double(i) / n), std::abs(F - double(i + 1) / n)});
     }
     EXPECT_LT(d, 1.95 / std::sqrt(double(n)));
