@@ -95,8 +95,8 @@ class DisneyMaterial final : public Material {
     }
     const Medium *interior_medium() const override { return subsurface_.medium.get(); }
     // With a textured baseColor or scatterDistance, the random walk's volume for a path entering
-    // at si: the coefficients of the base colour and scatter distance there, kept for the whole walk (as Cycles and Arnold do; the
-    // volume is not resampled as the walk moves under other colours).
+    // at si: the coefficients of the base colour and scatter distance there, kept for the whole
+    // walk (as Cycles does; the volume is not resampled as the walk moves under other colours).
     const Medium *interior_medium(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                                   ScratchBuffer &scratch) const override;
 
