@@ -95,6 +95,14 @@ TEST_F(ImageTextureTest, WrapModesFilterScaleAndInvert) {
     auto black = float_texture({strings("string", "filename", {file}, 2), strings("string", "wrap", {"black"}, 3)});
     EXPECT_FLOAT_EQ(black->evaluate(at_st(0, 0.75f)), 0.125f);  // half the left texel, half black
     EXPECT_FLOAT_EQ(black->evaluate(at_st(2, 2)), 0);
+    // The octahedral sphere map re-enters a left step at the mirrored row of the same edge: the
+    // texel left of the top-left one is the bottom-left one (repeat would give the top-right,
+    // clamp the top-left itself).
+    auto octahedral = float_texture({strings("string", "filename", {file}, 2),
+                                     strings("string", "wrap", {"octahedralsphere"}, 3),
+                                     strings("string", "filter", {"point"}, 4)});
+    EXPECT_FLOAT_EQ(octahedral->evaluate(at_st(-0.25f, 0.75f)), 0.75f);
+    EXPECT_FLOAT_EQ(octahedral->evaluate(at_st(0.25f, 1.25f)), 0.5f);
     auto point = float_texture({strings("string", "filename", {file}, 2), strings("string", "filter", {"point"}, 3)});
     EXPECT_FLOAT_EQ(point->evaluate(at_st(0.49f, 0.51f)), 0.25f);
     EXPECT_FLOAT_EQ(point->evaluate(at_st(0.51f, 0.49f)), 1);
