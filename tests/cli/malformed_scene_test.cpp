@@ -98,10 +98,11 @@ TEST(MalformedScenes, ManifestsListEveryScene) {
     std::set<std::string> listed;
     for (const char *manifest : {"expected.txt", "warnings.txt"})
         for (const Expectation &e : read_manifest(manifest)) listed.insert(e.scene);
-    for (const auto &entry : fs::directory_iterator(corpus_dir()))
-        if (entry.path().extension() == ".pbrt")
-            EXPECT_TRUE(listed.count(entry.path().filename().string()))
-                << entry.path() << " is in no manifest";
+    for (const auto &entry : fs::directory_iterator(corpus_dir())) {
+        if (entry.path().extension() == ".pbrt") {
+            EXPECT_TRUE(listed.count(entry.path().filename().string())) << entry.path() << " is in no manifest";
+        }
+    }
 }
 
 } // namespace

@@ -1162,7 +1162,9 @@ TEST_F(DisneyMaterialTest, TexturedScatterDistanceIsReadAtTheEntryPoint) {
                 else different += radius != first_radius;
             }
         }
-        if (std::string(model) == "diffusion") EXPECT_EQ(different, 1);
+        if (std::string(model) == "diffusion") {
+            EXPECT_EQ(different, 1);
+        }
     }
 }
 
