@@ -31,8 +31,9 @@ void expect_furnace_value(const RgbImage &img, const std::function<double(int, i
                         expected_sum += e;
                         ++n;
                     }
-                if (n > 0)
+                if (n > 0) {
                     EXPECT_NEAR(sum / expected_sum, 1.0, 0.005) << "block " << bx << "," << by << " channel " << c;
+                }
             }
 }
 
