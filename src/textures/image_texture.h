@@ -30,7 +30,6 @@ enum class ImageWrap { Repeat, Black, Clamp, OctahedralSphere };
 class TexelImage {
   public:
     TexelImage(int width, int height, int channels, std::vector<float> texels);
-    int channels() const { return channels_; }
     // The interpolated channels at texture coordinates st (written to out[0 .. channels)).
     void lookup(Vec2f st, ImageWrap wrap, bool nearest, float *out) const;
 
