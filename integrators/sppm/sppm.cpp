@@ -14,27 +14,51 @@
 #include "materials/disney_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
-#include "spatial/range_search.h"
+#include "spatial/photon_map.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <deque>
 #include <istream>
 #include <ostream>
 #include <stdexcept>
 
 namespace caustica {
 
+namespace {
+
+// What a photon leaves in its wavelength group's map: 24 bytes, 36 with its position.
+struct StoredPhoton {
+    // Unaligned (SampledSpectrum's 16-byte alignment would pad the record).
+    std::array<float, NumWavelengths> beta_values;
+    uint32_t wi;                  // octahedral, towards where the photon came from
+    uint16_t normal;              // coarse octahedral geometric normal, see photon_side.h
+    uint16_t depth : 15;          // scattering vertices on the light path before this one
+    uint16_t secondary_terminated : 1;
+
+    static constexpr int MaxDepth = (1 << 15) - 1; // sppm's "maxdepth" is at most this
+    SampledSpectrum beta() const { return {beta_values[0], beta_values[1], beta_values[2], beta_values[3]}; }
+};
+static_assert(sizeof(StoredPhoton) == 24, "photons are kept compact");
+
+using SppmPhotonMap = PhotonMap<StoredPhoton>;
+
+} // namespace
+
 SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
     : max_depth_(params.get_one_int("maxdepth", 5)), initial_radius_(params.get_one_float("radius", 0)),
       photons_per_iteration_(params.get_one_int("photonsperiteration", -1)),
       wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
       seed_(uint64_t(params.get_one_int("seed", 0)) + scene.overrides.seed),
-      photon_search_(params.get_one_string("photonsearch", "hashgrid")) {
-    if (max_depth_ < 0)
-        throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
+      photon_search_(PhotonSearch::HashGrid) {
+    const std::string photon_search = params.get_one_string("photonsearch", "hashgrid");
+    if (max_depth_ < 0 || max_depth_ > StoredPhoton::MaxDepth)
+        throw InputError(params.location("maxdepth"),
+                         "\"maxdepth\" must lie in [0, " + std::to_string(StoredPhoton::MaxDepth) + "]");
     if (initial_radius_ < 0 || !std::isfinite(initial_radius_))
         throw InputError(params.location("radius"), "\"radius\" must be a positive distance (or 0 for the default)");
     if (initial_radius_ == 0) initial_radius_ = default_merge_radius(scene);
@@ -43,8 +67,9 @@ SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
                          "\"photonsperiteration\" must be positive (or -1: one per pixel)");
     if (wavelength_groups_ < 1 || wavelength_groups_ > 64)
         throw InputError(params.location("wavelengthgroups"), "\"wavelengthgroups\" must lie in [1, 64]");
-    if (photon_search_ != "hashgrid" && photon_search_ != "flann")
+    if (photon_search != "hashgrid" && photon_search != "flann")
         throw InputError(params.location("photonsearch"), "\"photonsearch\" must be \"hashgrid\" or \"flann\"");
+    if (photon_search == "flann") photon_search_ = PhotonSearch::FlannKdTree;
     params.report_unused();
 }
 
@@ -69,14 +94,6 @@ struct VisiblePoint {
 struct PixelState {
     RGB direct;
     VisiblePoint vp, subsurface_vp;
-};
-
-struct StoredPhoton {
-    SampledSpectrum beta;
-    uint32_t wi;               // octahedral, towards where the photon came from
-    uint32_t normal;           // octahedral geometric normal, see photon_side.h
-    uint16_t depth;            // scattering vertices on the light path before this one
-    bool secondary_terminated;
 };
 
 // The second visible point of a camera path that reached the profile-subsurface solid at si
@@ -225,7 +242,7 @@ void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectr
 // One photon path: every non-specular surface reached after at least one scattering event
 // (on a surface or in a medium) is a photon; see trace_camera_path for why.
 void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, IterationPixelContext &ctx,
-                  std::vector<Vec3f> &positions, std::vector<StoredPhoton> &photons) {
+                  SppmPhotonMap &photons) {
     Sampler &sampler = ctx.sampler;
     auto chosen = scene.light_sampler->sample(sampler.get_1d());
     Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
@@ -269,9 +286,11 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
             continue;
         }
         if (depth > 0 && is_non_specular(bsdf.flags())) {
-            positions.push_back(si.p);
-            photons.push_back(StoredPhoton{beta, encode_octahedral(si.wo), encode_octahedral(si.n),
-                                           uint16_t(depth), lambda.secondary_terminated()});
+            photons.add(si.p, StoredPhoton{{beta[0], beta[1], beta[2], beta[3]},
+                                           encode_octahedral(si.wo),
+                                           encode_octahedral_coarse(si.n),
+                                           uint16_t(depth),
+                                           lambda.secondary_terminated()});
         }
         float u = sampler.get_1d();
         auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
@@ -324,17 +343,8 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         throw std::runtime_error("sppm: resumed without the estimates of the pixels");
     const size_t photon_count = photons_per_iteration_ > 0 ? size_t(photons_per_iteration_) : pixels.size();
     WavelengthGroups groups(wavelength_groups_, seed_);
-    std::vector<std::unique_ptr<RangeSearch>> searches;
-    for (int g = 0; g < wavelength_groups_; ++g) searches.push_back(create_range_search(photon_search_));
-    std::vector<std::vector<Vec3f>> group_positions(wavelength_groups_);
-    std::vector<std::vector<StoredPhoton>> group_photons(wavelength_groups_);
-    struct PhotonBuffer {
-        std::vector<Vec3f> positions;
-        std::vector<StoredPhoton> photons;
-        std::vector<std::pair<size_t, size_t>> ranges; // (path index, photon count)
-    };
-    tbb::enumerable_thread_specific<PhotonBuffer> buffers;
-    tbb::enumerable_thread_specific<std::vector<uint32_t>> found;
+    std::deque<SppmPhotonMap> maps; // per wavelength group
+    for (int g = 0; g < wavelength_groups_; ++g) maps.emplace_back(photon_search_);
     int iterations = 0;
 
     {
@@ -360,74 +370,37 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             });
             if (!completed) return false;
 
-            // Photon pass, then the photons of each group in path order (thread-independent).
-            for (PhotonBuffer &b : buffers) {
-                b.positions.clear();
-                b.photons.clear();
-                b.ranges.clear();
-            }
+            // Photon pass, then the groups' maps, independent of each other: indexed in parallel
+            // (one after another, they kept the second thread idle for a tenth of the render).
+            for (SppmPhotonMap &map : maps) map.clear();
             completed = renderer.for_each_path(iteration, photon_count, kPhotonDimension,
                                                [&](size_t index, IterationPixelContext &ctx) {
-                PhotonBuffer &b = buffers.local();
-                const size_t before = b.photons.size();
-                trace_photon(scene, max_depth_, groups.wavelengths(groups.group_of_light_path(index)), ctx,
-                             b.positions, b.photons);
-                if (b.photons.size() > before) b.ranges.emplace_back(index, b.photons.size() - before);
+                const int g = groups.group_of_light_path(index);
+                trace_photon(scene, max_depth_, groups.wavelengths(g), ctx, maps[g]);
             });
             if (!completed) return false;
-            struct Run {
-                size_t path;
-                const PhotonBuffer *buffer;
-                size_t begin, count;
-            };
-            std::vector<Run> runs;
-            for (const PhotonBuffer &b : buffers) {
-                size_t begin = 0;
-                for (auto [path, count] : b.ranges) {
-                    runs.push_back({path, &b, begin, count});
-                    begin += count;
-                }
-            }
-            std::sort(runs.begin(), runs.end(), [](const Run &a, const Run &b) { return a.path < b.path; });
-            std::vector<std::vector<const Run *>> group_runs(groups.count());
-            for (const Run &run : runs) group_runs[groups.group_of_light_path(run.path)].push_back(&run);
             float max_radius = 0;
             for (const PixelEstimate &estimate : estimates_) max_radius = std::max(max_radius, estimate.radius);
-            // The groups' photon maps are independent: assembled and indexed in parallel (done
-            // one after another, they kept the second thread idle for a tenth of the render).
-            tbb::parallel_for(0, groups.count(), [&](int g) {
-                group_positions[g].clear();
-                group_photons[g].clear();
-                for (const Run *run : group_runs[g]) {
-                    const auto positions = run->buffer->positions.begin() + std::ptrdiff_t(run->begin);
-                    const auto photons = run->buffer->photons.begin() + std::ptrdiff_t(run->begin);
-                    group_positions[g].insert(group_positions[g].end(), positions, positions + std::ptrdiff_t(run->count));
-                    group_photons[g].insert(group_photons[g].end(), photons, photons + std::ptrdiff_t(run->count));
-                }
-                searches[g]->build(group_positions[g], max_radius);
-            });
+            tbb::parallel_for(0, groups.count(), [&](int g) { maps[g].build(max_radius); });
 
             // Gather pass: each visible point's photons, then the progressive update. It traces
             // no rays and is not interrupted, so that every pixel's statistics describe the same
             // number of completed iterations.
             // The sensor value of the photons of group g within radius of vp; gathered counts them.
             auto gather = [&](const VisiblePoint &vp, int g, float radius, int &gathered) -> RGB {
-                std::vector<uint32_t> &near = found.local();
-                searches[g]->find_within(vp.p, radius, near);
                 SampledSpectrum phi(0.f);
                 int count = 0;
-                for (uint32_t i : near) {
-                    const StoredPhoton &photon = group_photons[g][i];
+                maps[g].for_each_within(vp.p, radius, [&](const StoredPhoton &photon) {
                     // "maxdepth" bounds the scattering vertices of the whole path, as for the
                     // other integrators (pbrt-v4 bounds each subpath separately instead).
-                    if (photon.depth + 1 + vp.depth > max_depth_) continue;
-                    if (!same_surface(decode_octahedral(photon.normal), vp.ng)) continue;
+                    if (photon.depth + 1 + vp.depth > max_depth_) return;
+                    if (!same_surface(decode_octahedral_coarse(photon.normal), vp.ng)) return;
                     ++count;
                     const Vec3f wi = decode_octahedral(photon.wi);
                     const float cos_ng = abs_dot(wi, vp.ng);
-                    if (cos_ng == 0) continue;
+                    if (cos_ng == 0) return;
                     SampledSpectrum f = vp.bsdf.f(vp.wo, wi, TransportMode::Radiance) * (abs_dot(wi, vp.ns) / cos_ng);
-                    SampledSpectrum contribution = f * photon.beta;
+                    SampledSpectrum contribution = f * photon.beta();
                     // A photon and a visible point of the same group share wavelengths; if
                     // either crossed dispersion, only the hero is valid, in the terminated
                     // set's measure.
@@ -438,7 +411,7 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                         for (int c = 1; c < NumWavelengths; ++c) contribution[c] = 0;
                     }
                     phi += contribution;
-                }
+                });
                 SampledSpectrum flux = vp.beta * phi;
                 if (flux.has_non_finite()) return RGB{};
                 gathered += count;

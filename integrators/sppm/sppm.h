@@ -23,9 +23,9 @@
 
 #include "integrators/integrator.h"
 #include "params/parameters.h"
+#include "spatial/photon_map.h"
 #include "spectral/color.h"
 
-#include <string>
 #include <vector>
 
 namespace caustica {
@@ -58,7 +58,7 @@ class SPPM final : public Integrator {
     long long photons_per_iteration_;
     int wavelength_groups_;
     uint64_t seed_;
-    std::string photon_search_;
+    PhotonSearch photon_search_;
     std::vector<PixelEstimate> estimates_; // row by row over the film's pixel bounds
 };
 

@@ -5,7 +5,7 @@
 //   is joined to every vertex of the light path traced for its pixel). Few are read per camera
 //   path, so they can be large.
 // - Photon: the compact record gathered by vertex merging, read in bulk by range queries, so it
-//   is kept small: 36 bytes, plus the 12-byte position the range search indexes (48 in all).
+//   is kept small: 32 bytes, 44 with its position in the photon map (spatial/photon_map.h).
 //
 // Both carry the recursive MIS quantities of Georgiev et al. 2012 ("Implementing vertex
 // connection and merging", tech. report, section 5) at their vertex: see vcm_mis.h. Vertices
@@ -37,19 +37,20 @@ struct LightVertex {
 
 struct Photon {
     // As LightVertex::beta, unaligned (SampledSpectrum's 16-byte alignment would pad the
-    // record to 48 bytes).
+    // record).
     std::array<float, NumWavelengths> beta_values;
     float d_vcm, d_vm;
     uint32_t wo;           // octahedral-encoded direction towards the previous vertex
-    // Octahedral-encoded geometric normal: merging only gathers photons that lie on a surface
-    // oriented like the camera vertex's (see photon_side.h). Unused for a photon in a medium
-    // (photons in media are kept in maps of their own).
-    uint32_t normal;
-    uint16_t path_length;
-    uint16_t secondary_terminated;
+    // Octahedral-encoded geometric normal, coarsely: merging only gathers photons that lie on a
+    // surface oriented like the camera vertex's, within 60 degrees (see photon_side.h). Unused
+    // for a photon in a medium (photons in media are kept in maps of their own).
+    uint16_t normal;
+    uint16_t path_length : 15; // vcm's "maxdepth" is at most MaxPathLength
+    uint16_t secondary_terminated : 1;
 
+    static constexpr int MaxPathLength = (1 << 15) - 1;
     SampledSpectrum beta() const { return {beta_values[0], beta_values[1], beta_values[2], beta_values[3]}; }
 };
-static_assert(sizeof(Photon) == 36, "photons are kept compact: see the comment above");
+static_assert(sizeof(Photon) == 32, "photons are kept compact: see the comment above");
 
 } // namespace caustica

@@ -15,12 +15,13 @@
 #include "materials/disney_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
-#include "spatial/range_search.h"
+#include "spatial/photon_map.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <deque>
 #include <span>
 #include <stdexcept>
 
@@ -30,19 +31,22 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
     : mode_(mode), max_depth_(params.get_one_int("maxdepth", 5)),
       base_radius_(params.get_one_float("radius", 0)), alpha_(params.get_one_float("alpha", 0.75f)),
       wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
-      photon_search_(params.get_one_string("photonsearch", "hashgrid")) {
+      photon_search_(PhotonSearch::HashGrid) {
+    const std::string photon_search = params.get_one_string("photonsearch", "hashgrid");
     const std::string light_vertices = params.get_one_string("lightvertices", "store");
     const char *name = mode == Mode::VertexConnectionMerging ? "vcm" : "bpm";
-    if (max_depth_ < 0)
-        throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
+    if (max_depth_ < 0 || max_depth_ > Photon::MaxPathLength)
+        throw InputError(params.location("maxdepth"),
+                         "\"maxdepth\" must lie in [0, " + std::to_string(Photon::MaxPathLength) + "]");
     if (base_radius_ < 0 || !std::isfinite(base_radius_))
         throw InputError(params.location("radius"), "\"radius\" must be a positive distance (or 0 for the default)");
     if (!(alpha_ > 0 && alpha_ <= 1))
         throw InputError(params.location("alpha"), "\"alpha\" must lie in (0, 1]");
     if (wavelength_groups_ < 1 || wavelength_groups_ > 64)
         throw InputError(params.location("wavelengthgroups"), "\"wavelengthgroups\" must lie in [1, 64]");
-    if (photon_search_ != "hashgrid" && photon_search_ != "flann")
+    if (photon_search != "hashgrid" && photon_search != "flann")
         throw InputError(params.location("photonsearch"), "\"photonsearch\" must be \"hashgrid\" or \"flann\"");
+    if (photon_search == "flann") photon_search_ = PhotonSearch::FlannKdTree;
     if (light_vertices != "store" && light_vertices != "retrace")
         throw InputError(params.location("lightvertices"), "\"lightvertices\" must be \"store\" or \"retrace\"");
     retrace_light_paths_ = light_vertices == "retrace";
@@ -82,51 +86,25 @@ struct StoredPath {
 
 // The photons of one wavelength group, either those on surfaces or those in media: the two are
 // never merged with each other (a surface camera vertex gathers over a disk, a medium one over a
-// sphere), so each kind has its own range search.
-struct PhotonMap {
-    std::unique_ptr<RangeSearch> search;
-    std::vector<Vec3f> positions;
-    std::vector<Photon> photons;
-};
+// sphere), so each kind has its own map.
+using VcmPhotonMap = PhotonMap<Photon>;
 
-struct PhotonBuffer;
-
-// Where one pixel's light path left its photons: ranges of the tracing thread's buffer, [0] on
-// surfaces and [1] in media.
-struct PathPhotons {
-    const PhotonBuffer *buffer = nullptr;
-    uint32_t begin[2] = {0, 0}, count[2] = {0, 0};
-};
-
-// The photons of the light paths one thread traced in an iteration, in the order it traced them.
-struct PhotonBuffer {
-    std::vector<Vec3f> positions[2];
-    std::vector<Photon> photons[2];
-
-    void clear() {
-        for (int kind = 0; kind < 2; ++kind) {
-            positions[kind].clear();
-            photons[kind].clear();
-        }
+// Adds the photons of one light path's vertices to its group's maps (none at the exit of a
+// jump, vcm_mis.h).
+void add_photons(std::span<const LightVertex> path, VcmPhotonMap &surface_photons, VcmPhotonMap &medium_photons) {
+    for (const LightVertex &v : path) {
+        if (v.after_jump) continue;
+        const ScatteringPoint &point = v.point;
+        const Photon photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]},
+                            v.d_vcm,
+                            v.d_vm,
+                            encode_octahedral(point.wo),
+                            point.in_medium() ? uint16_t(0) : encode_octahedral_coarse(point.ng),
+                            v.path_length,
+                            v.secondary_terminated};
+        (point.in_medium() ? medium_photons : surface_photons).add(point.p, photon);
     }
-    // The photons of one light path's vertices (none at the exit of a jump, vcm_mis.h).
-    PathPhotons add(std::span<const LightVertex> path) {
-        PathPhotons added{this};
-        for (int kind = 0; kind < 2; ++kind) added.begin[kind] = uint32_t(photons[kind].size());
-        for (const LightVertex &v : path) {
-            if (v.after_jump) continue;
-            const ScatteringPoint &point = v.point;
-            const int kind = point.in_medium() ? 1 : 0;
-            positions[kind].push_back(point.p);
-            photons[kind].push_back(Photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, v.d_vcm, v.d_vm,
-                                           encode_octahedral(point.wo),
-                                           point.in_medium() ? 0u : encode_octahedral(point.ng), v.path_length,
-                                           uint16_t(v.secondary_terminated)});
-        }
-        for (int kind = 0; kind < 2; ++kind) added.count[kind] = uint32_t(photons[kind].size()) - added.begin[kind];
-        return added;
-    }
-};
+}
 
 // The point where a segment of a subpath ends: a surface hit (si, its BSDF, and the media on its
 // two sides given the medium the path arrived in), or the scattering event inside `medium`.
@@ -410,8 +388,7 @@ struct CameraPathContext {
     // What the camera subpath is completed with: the pixel's light subpath, and the photons of
     // its wavelength group.
     const StoredPath &light_path;
-    const PhotonMap &surface_photons, &medium_photons;
-    std::vector<uint32_t> &found;        // range-search results, reused
+    const VcmPhotonMap &surface_photons, &medium_photons;
 };
 
 // Next-event estimation at a camera vertex: a light sampled and connected (the s = 1
@@ -485,22 +462,18 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
 // Gathers the photons of the camera vertex's wavelength group within the merge radius on its
 // surface (tech. report eqs. 42-43), normalised by pi r^2 times the group's light-path count.
 SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVertex &z) {
-    const PhotonMap &map = ctx.surface_photons;
-    std::vector<uint32_t> &found = ctx.found;
     const ScatteringPoint &point = z.point;
     const MergeWeights &here = ctx.w.surface;
-    map.search->find_within(point.p, ctx.it.radius, found);
     SampledSpectrum sum(0.f);
-    for (uint32_t index : found) {
-        const Photon &photon = map.photons[index];
+    ctx.surface_photons.for_each_within(point.p, ctx.it.radius, [&](const Photon &photon) {
         // The merged vertex belongs to both subpaths.
-        if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) continue;
-        if (!same_surface(decode_octahedral(photon.normal), point.ng)) continue;
+        if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) return;
+        if (!same_surface(decode_octahedral_coarse(photon.normal), point.ng)) return;
         const Vec3f wi = decode_octahedral(photon.wo);
         const float cos_ng = abs_dot(wi, point.ng);
-        if (cos_ng == 0) continue;
+        if (cos_ng == 0) return;
         SampledSpectrum f = point.bsdf.f(point.wo, wi, TransportMode::Radiance);
-        if (f.is_black()) continue;
+        if (f.is_black()) return;
         const float camera_dir_pdf = point.bsdf.pdf(point.wo, wi, TransportMode::Radiance);
         const float camera_rev_pdf = z.after_jump ? 1.f : point.bsdf.pdf(wi, point.wo, TransportMode::Importance);
         const float w_light = photon.d_vcm * here.vc_weight + photon.d_vm * mis(camera_dir_pdf);
@@ -511,7 +484,7 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
         sum += in_group_measure(f * photon.beta() * (shading / (w_light + 1 + w_camera)),
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
-    }
+    });
     return sum * ctx.it.vm_normalization[ctx.group];
 }
 
@@ -538,16 +511,12 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
 // eta = V N_group times the density of the connection ending there (vcm_mis.h), with d_vm
 // rescaled from its surface reference by d_vm_scale.
 SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex &z) {
-    const PhotonMap &map = ctx.medium_photons;
-    std::vector<uint32_t> &found = ctx.found;
     const ScatteringPoint &point = z.point;
     const MergeWeights &here = ctx.w.medium;
     const HenyeyGreenstein &phase = point.medium->phase();
-    map.search->find_within(point.p, ctx.it.radius, found);
     SampledSpectrum sum(0.f);
-    for (uint32_t index : found) {
-        const Photon &photon = map.photons[index];
-        if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) continue;
+    ctx.medium_photons.for_each_within(point.p, ctx.it.radius, [&](const Photon &photon) {
+        if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) return;
         const Vec3f wi = decode_octahedral(photon.wo);
         // The phase function is its own sampling density, and symmetric: it is also the density
         // with which the camera (from wo) and the light subpath (from wi) sample each other.
@@ -557,7 +526,7 @@ SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex
         sum += in_group_measure(photon.beta() * (p / (w_light + 1 + w_camera)),
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
-    }
+    });
     const SampledSpectrum sigma_s = point.medium->sigma_s(ctx.lambda);
     SampledSpectrum inverse_sigma_s(0.f);
     for (int i = 0; i < NumWavelengths; ++i)
@@ -618,16 +587,15 @@ bool jump_through_profile(const CameraPathContext &ctx, const DisneyMaterial &ma
 // group's full wavelength set.
 SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pixel, int group,
                                   const CameraRay &camera_ray, SampledWavelengths &lambda,
-                                  const StoredPath &light_path, const PhotonMap &surface_photons,
-                                  const PhotonMap &medium_photons, std::vector<uint32_t> &found) {
+                                  const StoredPath &light_path, const VcmPhotonMap &surface_photons,
+                                  const VcmPhotonMap &medium_photons) {
     const Scene &scene = it.scene;
     Sampler &sampler = pixel.sampler;
     const VcmWeights &w = it.weights[group];
     SampledWavelengths terminated = lambda;
     terminated.terminate_secondary();
     const float hero_scale = lambda.pdf()[0] / terminated.pdf()[0];
-    const CameraPathContext ctx{it,         pixel,           group,          w,    lambda, hero_scale,
-                                light_path, surface_photons, medium_photons, found};
+    const CameraPathContext ctx{it, pixel, group, w, lambda, hero_scale, light_path, surface_photons, medium_photons};
 
     // The camera generates the first vertex with its directional density, one sample per pixel
     // of the full frame; light tracing reaches it with N light paths (eq. 31 for the camera).
@@ -775,20 +743,17 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     WavelengthGroups groups(wavelength_groups_, scene.overrides.seed);
 
     // Per wavelength group.
-    std::vector<PhotonMap> surface_photons(wavelength_groups_), medium_photons(wavelength_groups_);
+    std::deque<VcmPhotonMap> surface_photons, medium_photons;
     for (int g = 0; g < wavelength_groups_; ++g) {
-        surface_photons[g].search = create_range_search(photon_search_);
-        medium_photons[g].search = create_range_search(photon_search_);
+        surface_photons.emplace_back(photon_search_);
+        medium_photons.emplace_back(photon_search_);
     }
     // Light vertices are kept through the iteration only for vcm's connections, and not when
     // they are traced again instead ("lightvertices" "retrace"); otherwise each thread's vector
     // holds one path at a time.
     const bool keep_light_vertices = use_vc && !retrace_light_paths_;
     tbb::enumerable_thread_specific<std::vector<LightVertex>> light_vertices;
-    tbb::enumerable_thread_specific<PhotonBuffer> photon_buffers;
-    tbb::enumerable_thread_specific<std::vector<uint32_t>> found;
     std::vector<StoredPath> light_paths(keep_light_vertices ? pixel_count : 0);
-    std::vector<PathPhotons> path_photons(use_vm ? pixel_count : 0);
     // One light path per pixel per completed iteration: a resumed render counts those of the
     // iterations it continues from.
     light_paths_traced_ = stats.pixel_samples;
@@ -812,7 +777,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         // Pass 1: one light subpath per pixel, connected to the lens, its vertices made photons
         // (and stored, for connections, with "store").
         for (auto &store : light_vertices) store.clear();
-        for (PhotonBuffer &buffer : photon_buffers) buffer.clear();
+        for (int g = 0; g < groups.count(); ++g) {
+            surface_photons[g].clear();
+            medium_photons[g].clear();
+        }
         bool completed = renderer.for_each_pixel(iteration, kLightPathDimension,
                                                  [&](Vec2i, size_t index, IterationPixelContext &pixel) {
             const int g = groups.group_of_pixel(index);
@@ -824,36 +792,19 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                              store);
             if (keep_light_vertices)
                 light_paths[index] = StoredPath{&store, uint32_t(begin), uint32_t(store.size() - begin)};
-            if (use_vm) path_photons[index] = photon_buffers.local().add(std::span(store).subspan(begin));
+            if (use_vm) add_photons(std::span(store).subspan(begin), surface_photons[g], medium_photons[g]);
             ++traced;
         });
         light_paths_traced_ = traced;
         if (!completed) return false;
 
-        // The photons of each wavelength group, in pixel order so that results do not depend on
-        // which thread traced which path. The groups' maps are independent, so they are
-        // assembled and indexed in parallel (one after another, they kept the second thread
-        // idle for a tenth of the render).
-        std::vector<std::vector<uint32_t>> group_pixels(groups.count());
-        for (size_t index = 0; index < pixel_count && use_vm; ++index)
-            group_pixels[groups.group_of_pixel(index)].push_back(uint32_t(index));
-        tbb::parallel_for(0, groups.count(), [&](int g) {
-            PhotonMap *maps[2] = {&surface_photons[g], &medium_photons[g]};
-            for (PhotonMap *map : maps) {
-                map->positions.clear();
-                map->photons.clear();
-            }
-            for (uint32_t index : group_pixels[g]) {
-                const PathPhotons &path = path_photons[index];
-                for (int kind = 0; kind < 2; ++kind) {
-                    const auto positions = path.buffer->positions[kind].begin() + path.begin[kind];
-                    const auto photons = path.buffer->photons[kind].begin() + path.begin[kind];
-                    maps[kind]->positions.insert(maps[kind]->positions.end(), positions, positions + path.count[kind]);
-                    maps[kind]->photons.insert(maps[kind]->photons.end(), photons, photons + path.count[kind]);
-                }
-            }
-            for (PhotonMap *map : maps) map->search->build(map->positions, radius);
-        });
+        // The groups' maps are independent, so they are indexed in parallel (one after another,
+        // they kept the second thread idle for a tenth of the render).
+        if (use_vm)
+            tbb::parallel_for(0, groups.count(), [&](int g) {
+                surface_photons[g].build(radius);
+                medium_photons[g].build(radius);
+            });
 
         // Pass 2: one camera subpath per pixel.
         Film &film = *scene.film;
@@ -880,7 +831,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             SampledSpectrum L(0.f);
             if (auto camera_ray = scene.camera->generate_ray(cs, lambda)) {
                 L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_path, surface_photons[g],
-                                      medium_photons[g], found.local());
+                                      medium_photons[g]);
                 if (L.has_non_finite()) {
                     ++ctx.non_finite;
                     L = SampledSpectrum(0.f);

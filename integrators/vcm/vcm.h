@@ -27,8 +27,8 @@
 
 #include "integrators/integrator.h"
 #include "params/parameters.h"
+#include "spatial/photon_map.h"
 
-#include <string>
 
 namespace caustica {
 
@@ -52,10 +52,10 @@ class VCM final : public Integrator {
     float base_radius_;
     float alpha_;
     int wavelength_groups_;
-    std::string photon_search_;
+    PhotonSearch photon_search_;
     // vcm connects each camera path to the light path traced for its pixel. "store" keeps every
     // light vertex of the iteration for that (a 160-byte LightVertex plus its BxDF, besides the
-    // 48-byte photon); "retrace" keeps only the photons and traces the pixel's light path again,
+    // 44-byte photon); "retrace" keeps only the photons and traces the pixel's light path again,
     // from the same random numbers (so the image is the same, bit for bit), just before its
     // camera path: a fifth of the memory for the time of tracing the light paths twice.
     bool retrace_light_paths_ = false;

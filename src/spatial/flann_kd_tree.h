@@ -9,17 +9,27 @@
 // a built tree are safe.
 #pragma once
 
-#include "spatial/range_search.h"
+#include "core/vecmath.h"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
 
 namespace caustica {
 
-class FlannKdTree final : public RangeSearch {
+class FlannKdTree {
   public:
     FlannKdTree();
-    ~FlannKdTree() override;
-    void build(std::span<const Vec3f> points, float max_radius) override;
-    void find_within(Vec3f center, float radius, std::vector<uint32_t> &indices) const override;
-    size_t memory_bytes() const override;
+    ~FlannKdTree();
+    // Indexes points for queries of radius at most max_radius; the tree keeps its own copy.
+    void build(std::span<const Vec3f> points, float max_radius);
+    // Replaces the contents of indices with the indices of the points within radius of center
+    // (the convention of photon_map.h), in an order fixed by the tree. Requires
+    // 0 <= radius <= max_radius (std::invalid_argument otherwise).
+    void find_within(Vec3f center, float radius, std::vector<uint32_t> &indices) const;
+    // The tree's bytes, its copy of the points included.
+    size_t memory_bytes() const;
 
   private:
     // The FLANN tree, kept out of this header because FLANN's headers are large.

@@ -5,43 +5,127 @@
 // extent along each axis is at most one cell, overlaps at most 2x2x2 cells. (Cells of side
 // max_radius would be smaller but a query would then visit up to 3x3x3 = 27 cells instead of 8;
 // the larger cells trade a few more distance tests for far fewer cell lookups.) Only occupied
-// cells matter, so integer cell coordinates are hashed into a table of as many buckets as there
-// are points; a counting sort by bucket stores the points of each bucket contiguously, in a copy
-// of the points kept in bucket order so that a query reads memory sequentially.
+// cells matter, so integer cell coordinates are hashed into a table of buckets.
 //
-// Both choices were measured with bench/range_search_bench.cpp (1M photons, ~30 neighbours per
-// query): cells of side max_radius made queries 1.5x slower, and reading the points through
-// their indices instead of the bucket-ordered copy made them 2x slower.
+// The grid does not copy the points: build() sorts the caller's items (photons with their
+// records) into bucket order in place, so that a query reads each bucket's items sequentially
+// and the grid itself holds only its bucket table. That table has one bucket for every two
+// points (4 bytes each, so 2 bytes a point): occupied cells are at most as many as points and in
+// practice far fewer, as a cell holds tens of photons, so collisions stay rare.
+//
+// Measured with bench/range_search_bench.cpp (1M photons, ~30 neighbours per query): cells of
+// side max_radius made queries 1.5x slower, and reading the points through an index array
+// instead of in bucket order made them 2x slower.
 #pragma once
 
-#include "spatial/range_search.h"
+#include "core/rng.h"
+#include "core/vecmath.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace caustica {
 
-class HashGrid final : public RangeSearch {
+class HashGrid {
   public:
-    void build(std::span<const Vec3f> points, float max_radius) override;
-    void find_within(Vec3f center, float radius, std::vector<uint32_t> &indices) const override;
-    size_t memory_bytes() const override;
+    // Reorders [first, last) in place so that the items of each bucket are contiguous and ordered
+    // by `less` among themselves, and indexes them for queries of radius at most max_radius.
+    // position(item) is the item's point (finite). The order within a bucket depends only on the
+    // set of items and `less`, not on the order they came in, if `less` is a total order.
+    template <class Iterator, class Position, class Less>
+    void build(Iterator first, Iterator last, float max_radius, Position position, Less less);
+
+    // Calls visit(begin, end) with the index range, into the built sequence, of each bucket that
+    // may hold an item within radius of center: every such item is in one of the ranges (items
+    // outside the ball are too: the caller tests distances), and no range is visited twice.
+    // Requires 0 <= radius <= max_radius (std::invalid_argument otherwise).
+    template <class Visit> void for_each_candidate_range(Vec3f center, float radius, Visit visit) const;
+
+    // The bucket table's bytes.
+    size_t memory_bytes() const { return bucket_starts_.size() * sizeof(uint32_t); }
 
   private:
     using CellCoords = std::array<int64_t, 3>;
+    // Fixes the cells for points within bounds and sizes the bucket table (all zero).
+    void set_cells(const Bounds3f &bounds, size_t point_count, float max_radius);
     // Cell index of coordinate x along an axis, unclamped. Evaluated in double and monotone in x,
-    // which is what makes queries exact (see find_within).
-    int64_t cell_coordinate(double x, int axis) const;
+    // which is what makes queries exact (see overlapping_buckets).
+    int64_t cell_coordinate(double x, int axis) const {
+        return int64_t(std::floor((x - bounds_.lo[axis]) * inverse_cell_size_));
+    }
     uint32_t bucket_of(const CellCoords &cell) const;
+    uint32_t bucket_of(Vec3f p) const {
+        return bucket_of(CellCoords{cell_coordinate(p.x, 0), cell_coordinate(p.y, 1), cell_coordinate(p.z, 2)});
+    }
+    uint32_t bucket_count() const { return uint32_t(bucket_starts_.size() - 1); }
+    // The distinct buckets of the cells a query ball overlaps, at most 27; 0 if it misses the
+    // points' bounds.
+    int overlapping_buckets(Vec3f center, float radius, std::array<uint32_t, 27> &buckets) const;
 
     Bounds3f bounds_;
     float max_radius_ = 0;
     double inverse_cell_size_ = 1;
     CellCoords max_cell_{};
-    // bucket_ends_[b] is one past the last entry of bucket b in sorted_points_/sorted_indices_;
-    // bucket b starts at bucket_ends_[b - 1] (0 for b = 0).
-    std::vector<uint32_t> bucket_ends_;
-    std::vector<Vec3f> sorted_points_;
-    std::vector<uint32_t> sorted_indices_;
+    // Bucket b holds the items [bucket_starts_[b], bucket_starts_[b + 1]); one entry more than
+    // there are buckets (none before the first build).
+    std::vector<uint32_t> bucket_starts_;
 };
+
+template <class Iterator, class Position, class Less>
+void HashGrid::build(Iterator first, Iterator last, float max_radius, Position position, Less less) {
+    const size_t n = size_t(last - first);
+    if (n >= std::numeric_limits<uint32_t>::max()) throw std::invalid_argument("HashGrid: more than 2^32 - 1 points");
+    if (!(max_radius >= 0)) throw std::invalid_argument("HashGrid: negative max_radius");
+    Bounds3f bounds;
+    for (Iterator it = first; it != last; ++it) bounds.expand(position(*it));
+    set_cells(bounds, n, max_radius);
+    if (n == 0) return;
+
+    // Counting sort by bucket, in place. After counting, turn each bucket's count into its end;
+    // an item is then placed at its bucket's cursor, moved down from the end one slot at a time,
+    // so each cursor finishes at its bucket's start. Slots at and above a cursor are placed, so
+    // the cursor always points at a slot still to fill. A cycle starts at the first unplaced slot
+    // i: the item taken from it goes to its bucket's slot, the item found there to its own, and
+    // so on until an item lands in slot i itself. Every item moves once; one bit a slot records
+    // which are placed.
+    std::vector<uint32_t> &cursor = bucket_starts_;
+    for (Iterator it = first; it != last; ++it) ++cursor[bucket_of(position(*it))];
+    uint32_t end = 0;
+    for (uint32_t b = 0; b < bucket_count(); ++b) cursor[b] = end += cursor[b];
+    cursor.back() = uint32_t(n);
+    std::vector<bool> placed(n, false);
+    for (size_t i = 0; i < n; ++i) {
+        if (placed[i]) continue;
+        typename std::iterator_traits<Iterator>::value_type held = first[i];
+        while (true) {
+            const uint32_t slot = --cursor[bucket_of(position(held))];
+            placed[slot] = true;
+            if (slot == i) {
+                first[i] = held;
+                break;
+            }
+            std::swap(held, first[slot]);
+        }
+    }
+    for (uint32_t b = 0; b < bucket_count(); ++b) std::sort(first + cursor[b], first + cursor[b + 1], less);
+}
+
+template <class Visit> void HashGrid::for_each_candidate_range(Vec3f center, float radius, Visit visit) const {
+    if (!(radius >= 0 && radius <= max_radius_))
+        throw std::invalid_argument("HashGrid: query radius outside [0, max_radius]");
+    std::array<uint32_t, 27> buckets;
+    const int count = overlapping_buckets(center, radius, buckets);
+    for (int i = 0; i < count; ++i) {
+        const uint32_t begin = bucket_starts_[buckets[i]], end = bucket_starts_[buckets[i] + 1];
+        if (begin < end) visit(begin, end);
+    }
+}
 
 } // namespace caustica

@@ -1,0 +1,99 @@
+// A photon map: records at points, added by the threads of a pass as light paths are traced,
+// then indexed once and queried from many threads for the records within a radius. It is the
+// photon lookup of photon mapping and the merge of vertex merging.
+//
+// Two searches sit behind it. The default is the hashed grid of the VCM paper (hash_grid.h),
+// which sorts the photons into its bucket order in place. The photons then cost their own
+// bytes, plus 2 bytes each for the bucket table and, while the grid is built, one bit. The other
+// is FLANN's kd-tree (flann_kd_tree.h), which copies the positions into a tree of its own.
+//
+// Queries see photons in an order that depends only on the set of photons, never on which
+// thread traced which path or on the thread count. Rendered images thus do not change with the
+// thread count, although floating-point sums depend on their order. Both searches sort the
+// photons by their bytes (the grid within each bucket, the tree before it is built), and then
+// visit them in an order fixed by the structure.
+//
+// A point is found when its float squared distance to the center, (dx*dx + dy*dy) + dz*dz, is
+// strictly less than radius*radius, so radius 0 finds nothing and points exactly at the radius
+// are left out. Points, centers and radii are assumed finite; at most 2^32 - 1 photons.
+#pragma once
+
+#include "spatial/block_storage.h"
+#include "spatial/flann_kd_tree.h"
+#include "spatial/hash_grid.h"
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+namespace caustica {
+
+enum class PhotonSearch { HashGrid, FlannKdTree };
+
+template <class Record> class PhotonMap {
+  public:
+    struct Photon {
+        Vec3f p;
+        Record record;
+    };
+    // Photons are compared byte for byte, which orders them by value only if they hold no
+    // padding. (Records are expected to be packed as well: see each record's own assertion.)
+    static_assert(sizeof(Photon) == sizeof(Vec3f) + sizeof(Record), "a photon must not hold padding");
+
+    explicit PhotonMap(PhotonSearch search = PhotonSearch::HashGrid) : search_(search) {}
+
+    // Empties the map for the next pass, keeping its memory.
+    void clear() { storage_.clear(); }
+    // Safe from any number of threads at once, between clear() and build().
+    void add(Vec3f p, const Record &record) { storage_.push_back(Photon{p, record}); }
+    // Indexes the photons added since clear() for queries of radius at most max_radius.
+    void build(float max_radius) {
+        storage_.close();
+        if (search_ == PhotonSearch::HashGrid) {
+            grid_.build(storage_.begin(), storage_.end(), max_radius, [](const Photon &photon) { return photon.p; },
+                        bytes_less);
+            return;
+        }
+        std::sort(storage_.begin(), storage_.end(), bytes_less);
+        std::vector<Vec3f> positions(storage_.size());
+        for (size_t i = 0; i < positions.size(); ++i) positions[i] = storage_[i].p;
+        tree_.build(positions, max_radius); // the tree keeps a copy
+    }
+
+    // Calls visit(record) for every photon within radius of center; thread-safe after build().
+    // Requires 0 <= radius <= max_radius (std::invalid_argument otherwise).
+    template <class Visit> void for_each_within(Vec3f center, float radius, Visit visit) const {
+        if (search_ == PhotonSearch::HashGrid) {
+            const float radius2 = radius * radius;
+            grid_.for_each_candidate_range(center, radius, [&](uint32_t begin, uint32_t end) {
+                for (auto it = storage_.begin() + begin, last = storage_.begin() + end; it != last; ++it)
+                    if (distance_squared(it->p, center) < radius2) visit(it->record);
+            });
+            return;
+        }
+        std::vector<uint32_t> &found = found_.local();
+        tree_.find_within(center, radius, found);
+        for (uint32_t index : found) visit(storage_[index].record);
+    }
+
+    size_t size() const { return storage_.size(); }
+    // The photons' blocks and the search structure.
+    size_t memory_bytes() const {
+        return storage_.memory_bytes() +
+               (search_ == PhotonSearch::HashGrid ? grid_.memory_bytes() : tree_.memory_bytes());
+    }
+
+  private:
+    static bool bytes_less(const Photon &a, const Photon &b) { return std::memcmp(&a, &b, sizeof(Photon)) < 0; }
+
+    PhotonSearch search_;
+    BlockStorage<Photon> storage_;
+    HashGrid grid_;
+    FlannKdTree tree_;
+    // Each querying thread's indices from the tree.
+    mutable tbb::enumerable_thread_specific<std::vector<uint32_t>> found_;
+};
+
+} // namespace caustica
