@@ -46,6 +46,9 @@ struct RenderStats {
     std::vector<int> pixel_sample_counts;
     bool interrupted = false;
     double seconds = 0;
+    // sppm, bpm and vcm: the most light vertices kept at once for the camera pass (photons, and
+    // with vcm's "lightvertices" "store" the vertices kept for connections), over iterations.
+    std::atomic<uint64_t> stored_light_vertices{0};
 };
 
 // Progress callback: fraction done in [0,1] and samples taken so far.

@@ -344,7 +344,8 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     const size_t photon_count = photons_per_iteration_ > 0 ? size_t(photons_per_iteration_) : pixels.size();
     WavelengthGroups groups(wavelength_groups_, seed_);
     std::deque<SppmPhotonMap> maps; // per wavelength group
-    for (int g = 0; g < wavelength_groups_; ++g) maps.emplace_back(photon_search_);
+    auto photon_blocks = std::make_shared<SppmPhotonMap::Pool>();
+    for (int g = 0; g < wavelength_groups_; ++g) maps.emplace_back(photon_search_, photon_blocks);
     int iterations = 0;
 
     {
@@ -382,6 +383,9 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             float max_radius = 0;
             for (const PixelEstimate &estimate : estimates_) max_radius = std::max(max_radius, estimate.radius);
             tbb::parallel_for(0, groups.count(), [&](int g) { maps[g].build(max_radius); });
+            uint64_t stored = 0;
+            for (const SppmPhotonMap &map : maps) stored += map.size();
+            stats.stored_light_vertices = std::max<uint64_t>(stats.stored_light_vertices, stored);
 
             // Gather pass: each visible point's photons, then the progressive update. It traces
             // no rays and is not interrupted, so that every pixel's statistics describe the same

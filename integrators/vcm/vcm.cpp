@@ -744,9 +744,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
 
     // Per wavelength group.
     std::deque<VcmPhotonMap> surface_photons, medium_photons;
+    auto photon_blocks = std::make_shared<VcmPhotonMap::Pool>();
     for (int g = 0; g < wavelength_groups_; ++g) {
-        surface_photons.emplace_back(photon_search_);
-        medium_photons.emplace_back(photon_search_);
+        surface_photons.emplace_back(photon_search_, photon_blocks);
+        medium_photons.emplace_back(photon_search_, photon_blocks);
     }
     // Light vertices are kept through the iteration only for vcm's connections, and not when
     // they are traced again instead ("lightvertices" "retrace"); otherwise each thread's vector
@@ -805,6 +806,12 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                 surface_photons[g].build(radius);
                 medium_photons[g].build(radius);
             });
+        uint64_t stored = 0;
+        if (keep_light_vertices)
+            for (const std::vector<LightVertex> &store : light_vertices) stored += store.size();
+        else
+            for (int g = 0; g < groups.count(); ++g) stored += surface_photons[g].size() + medium_photons[g].size();
+        stats.stored_light_vertices = std::max<uint64_t>(stats.stored_light_vertices, stored);
 
         // Pass 2: one camera subpath per pixel.
         Film &film = *scene.film;

@@ -66,6 +66,7 @@ void write_stats_json(const std::string &path, const Scene &scene, const RenderS
         << "  \"rays_per_second\": " << rays_per_second << ",\n"
         << "  \"non_finite_samples\": " << stats.non_finite_samples.load() << ",\n"
         << "  \"partial\": " << (stats.interrupted ? "true" : "false") << ",\n"
+        << "  \"stored_light_vertices\": " << stats.stored_light_vertices.load() << ",\n"
         << "  \"peak_memory_mib\": " << peak_memory_mib() << "\n"
         << "}\n";
     if (!out) throw std::runtime_error("failed writing statistics to \"" + path + "\"");

@@ -22,6 +22,33 @@
 
 namespace caustica {
 
+// Free blocks, for storages to claim. Storages that take turns growing (one per wavelength group,
+// whose shares of a pass vary) share one pool, so that their memory peaks at the most they hold
+// together rather than at the sum of what each one ever held. (Returning blocks to the
+// allocator instead costs more: glibc's per-thread arenas then grow apart.)
+template <class T, size_t BlockSize> class BlockPool {
+  public:
+    std::unique_ptr<T[]> take() {
+        {
+            std::lock_guard lock(mutex_);
+            if (!free_.empty()) {
+                std::unique_ptr<T[]> block = std::move(free_.back());
+                free_.pop_back();
+                return block;
+            }
+        }
+        return std::make_unique_for_overwrite<T[]>(BlockSize);
+    }
+    void give(std::unique_ptr<T[]> block) {
+        std::lock_guard lock(mutex_);
+        free_.push_back(std::move(block));
+    }
+
+  private:
+    std::mutex mutex_;
+    std::vector<std::unique_ptr<T[]>> free_;
+};
+
 template <class T> class BlockStorage {
     static_assert(std::is_trivially_copyable_v<T>);
 
@@ -30,6 +57,10 @@ template <class T> class BlockStorage {
     // groups, on surfaces and in media), the partly filled blocks of a pass stay within 1.5
     // bytes a record at a few hundred thousand records, and claiming a block (a lock) is rare.
     static constexpr size_t BlockSize = 128;
+    using Pool = BlockPool<T, BlockSize>;
+
+    // With its own pool, or sharing one.
+    explicit BlockStorage(std::shared_ptr<Pool> pool = nullptr) : pool_(pool ? std::move(pool) : std::make_shared<Pool>()) {}
 
     class iterator {
       public:
@@ -62,9 +93,9 @@ template <class T> class BlockStorage {
         size_t index_ = 0;
     };
 
-    // Empties the storage, keeping its blocks for the next pass. Not concurrent with push_back.
+    // Empties the storage, its blocks going back to the pool. Not concurrent with push_back.
     void clear() {
-        for (std::unique_ptr<T[]> &block : blocks_) spare_.push_back(std::move(block));
+        for (std::unique_ptr<T[]> &block : blocks_) pool_->give(std::move(block));
         blocks_.clear();
         block_pointers_.clear();
         for (OpenBlock &open : open_) open = OpenBlock{};
@@ -87,14 +118,14 @@ template <class T> class BlockStorage {
                 partial.insert(partial.end(), open.block, open.block + open.count);
                 auto it = std::find_if(blocks_.begin(), blocks_.end(),
                                        [&](const std::unique_ptr<T[]> &b) { return b.get() == open.block; });
-                spare_.push_back(std::move(*it));
+                pool_->give(std::move(*it));
                 blocks_.erase(it);
             }
             open = OpenBlock{};
         }
         size_ = blocks_.size() * BlockSize;
         for (const T &value : partial) {
-            if (size_ % BlockSize == 0) blocks_.push_back(take_block());
+            if (size_ % BlockSize == 0) blocks_.push_back(pool_->take());
             blocks_.back()[size_++ % BlockSize] = value;
         }
         block_pointers_.clear();
@@ -107,7 +138,6 @@ template <class T> class BlockStorage {
     iterator end() const { return iterator(block_pointers_.data(), size_); }
     T &operator[](size_t i) const { return block_pointers_[i / BlockSize][i % BlockSize]; }
 
-    // The blocks in use (not the spare ones kept for reuse).
     size_t memory_bytes() const { return blocks_.size() * BlockSize * sizeof(T); }
 
   private:
@@ -116,20 +146,15 @@ template <class T> class BlockStorage {
         size_t count = 0;
     };
 
-    std::unique_ptr<T[]> take_block() {
-        if (spare_.empty()) return std::make_unique_for_overwrite<T[]>(BlockSize);
-        std::unique_ptr<T[]> block = std::move(spare_.back());
-        spare_.pop_back();
-        return block;
-    }
     T *claim_block() {
+        std::unique_ptr<T[]> block = pool_->take();
         std::lock_guard lock(mutex_);
-        blocks_.push_back(take_block());
-        return blocks_.back().get();
+        return blocks_.emplace_back(std::move(block)).get();
     }
 
+    std::shared_ptr<Pool> pool_;
     std::mutex mutex_;
-    std::vector<std::unique_ptr<T[]>> blocks_, spare_;
+    std::vector<std::unique_ptr<T[]>> blocks_;
     std::vector<T *> block_pointers_;
     tbb::enumerable_thread_specific<OpenBlock> open_;
     size_t size_ = 0;

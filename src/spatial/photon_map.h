@@ -25,7 +25,10 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
-#include <cstring>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace caustica {
@@ -38,11 +41,15 @@ template <class Record> class PhotonMap {
         Vec3f p;
         Record record;
     };
-    // Photons are compared byte for byte, which orders them by value only if they hold no
+    // Photons are compared word for word, which orders them by value only if they hold no
     // padding. (Records are expected to be packed as well: see each record's own assertion.)
     static_assert(sizeof(Photon) == sizeof(Vec3f) + sizeof(Record), "a photon must not hold padding");
+    static_assert(sizeof(Photon) % sizeof(uint32_t) == 0, "photons are compared as 32-bit words");
 
-    explicit PhotonMap(PhotonSearch search = PhotonSearch::HashGrid) : search_(search) {}
+    // Maps filled in the same passes share their blocks' pool (block_storage.h) to peak lower.
+    using Pool = typename BlockStorage<Photon>::Pool;
+    explicit PhotonMap(PhotonSearch search = PhotonSearch::HashGrid, std::shared_ptr<Pool> pool = nullptr)
+        : search_(search), storage_(std::move(pool)) {}
 
     // Empties the map for the next pass, keeping its memory.
     void clear() { storage_.clear(); }
@@ -86,7 +93,13 @@ template <class Record> class PhotonMap {
     }
 
   private:
-    static bool bytes_less(const Photon &a, const Photon &b) { return std::memcmp(&a, &b, sizeof(Photon)) < 0; }
+    // A total order on the photons' values: their 32-bit words compared in turn (inline, unlike
+    // memcmp, which made the sort twice as slow; the first word, x, nearly always decides).
+    static bool bytes_less(const Photon &a, const Photon &b) {
+        using Words = std::array<uint32_t, sizeof(Photon) / sizeof(uint32_t)>;
+        const Words wa = std::bit_cast<Words>(a), wb = std::bit_cast<Words>(b);
+        return std::lexicographical_compare(wa.begin(), wa.end(), wb.begin(), wb.end());
+    }
 
     PhotonSearch search_;
     BlockStorage<Photon> storage_;

@@ -70,7 +70,7 @@ TEST(Cli, RenderWritesExrPngAndStatistics) {
     for (float v : exr.rgb) ASSERT_TRUE(std::isfinite(v));
     std::string stats = read_text(dir + "/stats.json");
     for (const char *key : {"wall_seconds", "samples_per_pixel", "rays", "rays_per_second",
-                            "non_finite_samples", "peak_memory_mib"})
+                            "non_finite_samples", "stored_light_vertices", "peak_memory_mib"})
         EXPECT_NE(stats.find(std::string("\"") + key + "\""), std::string::npos) << key;
     EXPECT_NE(stats.find("\"samples_per_pixel\": 2"), std::string::npos);
     // Not a terminal: plain progress lines, one per 10%, ending at 100%.
