@@ -5,7 +5,8 @@
 //
 // Two precisions: 16 bits per axis (32 in all) for directions that BSDFs are evaluated in,
 // worst-case angular error about 1e-4 radians; 8 bits per axis (16 in all) for normals that are
-// only compared against a coarse threshold (photon_side.h), worst case about 0.01 radians.
+// only compared against a coarse threshold (photon_side.h), worst case about 0.017 radians (one
+// degree).
 #pragma once
 
 #include "core/vecmath.h"
