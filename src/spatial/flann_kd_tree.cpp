@@ -12,7 +12,7 @@ namespace {
 
 // Points per leaf. FLANN's default is 10; with 10-50 neighbours per query a larger leaf trades a
 // few extra distance tests for a shallower tree: 16 answered queries about 10% faster than 10
-// and built a smaller tree (bench/range_search_bench.cpp).
+// and built a smaller tree (bench/photon_map_bench.cpp).
 constexpr int LeafSize = 16;
 
 // Appends the index of every point FLANN offers whose squared distance is below the squared

@@ -30,7 +30,7 @@ uint32_t HashGrid::bucket_of(const CellCoords &cell) const {
 void HashGrid::set_cells(const Bounds3f &bounds, size_t point_count, float max_radius) {
     bounds_ = bounds;
     max_radius_ = max_radius;
-    bucket_starts_.assign(point_count == 0 ? 0 : std::max<size_t>(1, point_count / 2) + 1, 0);
+    bucket_starts_.assign(point_count == 0 ? 0 : std::max<size_t>(1, point_count / 4) + 1, 0);
     if (point_count == 0) return;
     double extent = max_component(bounds_.diagonal());
     double cell_size = std::max(2.0 * max_radius, extent / MaxCellsPerAxis);

@@ -4,7 +4,7 @@
 //
 // Two searches sit behind it. The default is the hashed grid of the VCM paper (hash_grid.h),
 // which sorts the photons into its bucket order in place. The photons then cost their own
-// bytes, plus 2 bytes each for the bucket table and, while the grid is built, one bit. The other
+// bytes, plus 1 byte each for the bucket table. The other
 // is FLANN's kd-tree (flann_kd_tree.h), which copies the positions into a tree of its own.
 //
 // Queries see photons in an order that depends only on the set of photons, never on which
