@@ -16,6 +16,8 @@ class RGBAlbedoSpectrum final : public Spectrum {
         return rsp_.sample(lambda);
     }
     float max_value() const override { return rsp_.max_value(); }
+    // Grey: the table's polynomial for r = g = b is a constant.
+    bool is_constant() const override { return rsp_.c0() == 0 && rsp_.c1() == 0; }
 
   private:
     SigmoidPolynomial rsp_;
@@ -32,6 +34,7 @@ class RGBUnboundedSpectrum final : public Spectrum {
         return rsp_.sample(lambda) * scale_;
     }
     float max_value() const override { return scale_ * rsp_.max_value(); }
+    bool is_constant() const override { return rsp_.c0() == 0 && rsp_.c1() == 0; }
 
   private:
     float scale_;

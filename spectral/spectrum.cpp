@@ -3,6 +3,7 @@
 #include "spectral/cie.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace caustica {
@@ -100,5 +101,24 @@ float inner_product(const Spectrum &a, const Spectrum &b) {
 }
 
 float inner_product_y(const Spectrum &s) { return inner_product(s, cie_y()); }
+
+bool is_flat(const Spectrum &s) { return s.is_constant() || is_multiple_of(s, ConstantSpectrum(1)); }
+
+bool is_multiple_of(const Spectrum &b, const Spectrum &a) {
+    // The factor from the wavelength where a is largest, then every wavelength checked against it.
+    float a_max = 0, b_at_a_max = 0;
+    for (float lambda = LambdaMin; lambda <= LambdaMax; ++lambda)
+        if (a(lambda) > a_max) {
+            a_max = a(lambda);
+            b_at_a_max = b(lambda);
+        }
+    if (!(a_max > 0)) return false;
+    const float k = b_at_a_max / a_max;
+    if (!(k >= 0)) return false;
+    constexpr float tolerance = 1e-4f;
+    for (float lambda = LambdaMin; lambda <= LambdaMax; ++lambda)
+        if (std::abs(b(lambda) - k * a(lambda)) > tolerance * std::max(std::abs(b(lambda)), k * a_max)) return false;
+    return true;
+}
 
 } // namespace caustica

@@ -94,6 +94,13 @@ class BlackbodySpectrum final : public Spectrum {
     float t_, normalization_;
 };
 
+// True if b is a constant multiple of a (k >= 0) at every integer nm of [LambdaMin, LambdaMax],
+// to a relative tolerance of 1e-4: the two have the same colour. a must not be zero everywhere.
+bool is_multiple_of(const Spectrum &b, const Spectrum &a);
+
+// True if s does not depend on wavelength (at every integer nm, to the same tolerance).
+bool is_flat(const Spectrum &s);
+
 // Sum of a(l) b(l) over every integer nm l in [LambdaMin, LambdaMax] (pbrt's InnerProduct).
 float inner_product(const Spectrum &a, const Spectrum &b);
 // Integral of a spectrum against CIE Y (nm units): inner_product(s, cie_y()). Lights divide by

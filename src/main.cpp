@@ -32,6 +32,8 @@ int main(int argc, char **argv) {
                            "Monochromatic render: radiance at this wavelength (nm) as grey");
     render_cmd->add_flag("--single-wavelength", render.single_wavelength,
                          "One wavelength per path instead of hero-wavelength sampling");
+    render_cmd->add_flag("--spectral", render.spectral,
+                         "Sample wavelengths even where the scene is achromatic (for comparisons)");
     render_cmd->add_flag("--variance", render.variance_layer,
                          "Add a \"variance\" layer to the EXR: each pixel's estimated variance of its mean");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress output");

@@ -17,6 +17,7 @@ namespace caustica {
 
 SampledWavelengths sample_wavelengths(const Scene &scene, float u) {
     if (scene.overrides.wavelength > 0) return SampledWavelengths::fixed(scene.overrides.wavelength);
+    if (scene.achromatic_wavelength > 0) return SampledWavelengths::fixed(scene.achromatic_wavelength);
     if (scene.overrides.single_wavelength) return SampledWavelengths::sample_single(u);
     return SampledWavelengths::sample_visible(u);
 }

@@ -224,6 +224,7 @@ RenderFingerprint render_fingerprint(const std::string &scene_path, const SceneD
         {"pixel-bounds", vec(bounds.min) + " " + vec(bounds.max)},
         {"wavelength", number_text(scene.overrides.wavelength)},
         {"single-wavelength", scene.overrides.single_wavelength ? "on" : "off"},
+        {"spectral", scene.overrides.spectral ? "on" : "off"},
         {"variance", variance ? "on" : "off"},
     }};
 }

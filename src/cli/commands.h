@@ -21,6 +21,7 @@ struct RenderCommandOptions {
     std::string stats_json;     // empty: no statistics file
     float wavelength = 0;       // > 0: monochromatic render at this wavelength in nm
     bool single_wavelength = false;
+    bool spectral = false;      // no achromatic fast path
     bool variance_layer = false; // add a "variance" layer to the EXR
     bool quiet = false;
     double checkpoint_seconds = -1; // >= 0: save a checkpoint at most this often (cli/checkpoint.h)

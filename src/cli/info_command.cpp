@@ -32,6 +32,11 @@ int run_info(const std::string &scene_path) {
     std::printf("  absorbing interiors:       %s\n", yes_no(f.absorbing_interiors));
     std::printf("  participating media:       %s\n", yes_no(f.media));
     std::printf("  subsurface scattering:     %s\n", yes_no(f.subsurface));
+    if (f.achromatic)
+        std::printf("  achromatic:                yes (rendered at %.0f nm, no colour noise)\n",
+                    scene->achromatic_wavelength);
+    else
+        std::printf("  achromatic:                no\n");
     std::printf("  image showing emitters:    %.0f%%\n", 100 * f.probe.view_emitters);
     std::printf("  image showing specular:    %.0f%%\n", 100 * f.probe.view_specular);
     std::printf("  light meeting specular:    %.0f%%\n", 100 * f.probe.lights_behind_specular);

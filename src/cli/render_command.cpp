@@ -81,6 +81,7 @@ int run_render(const RenderCommandOptions &options) {
     overrides.seed = options.seed;
     overrides.wavelength = options.wavelength;
     overrides.single_wavelength = options.single_wavelength;
+    overrides.spectral = options.spectral;
     if (!options.resolution.empty()) parse_resolution(options.resolution, &overrides.width, &overrides.height);
     if (options.wavelength != 0 && (options.wavelength < LambdaMin || options.wavelength > LambdaMax))
         throw InputError("--wavelength must lie in [360, 830] nm");

@@ -38,11 +38,17 @@ FilmExtent Film::extent() const {
             r};
 }
 
+void Film::set_achromatic(const Spectrum &colour, float lambda) {
+    achromatic_rgb_ = sensor_.to_sensor_rgb(colour) / colour(lambda);
+}
+
 RGB Film::sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const {
     RGB v;
     if (monochromatic_) {
         float grey = safe_div(L, lambda.pdf()).average() * sensor_.imaging_ratio();
         v = {grey, grey, grey};
+    } else if (achromatic_rgb_) {
+        v = *achromatic_rgb_ * L.average();
     } else {
         v = sensor_.to_sensor_rgb(L, lambda);
     }

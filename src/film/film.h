@@ -34,6 +34,7 @@
 #include <atomic>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,11 @@ class Film {
     // (1/n) sum_j L_j / pdf_j (times the imaging ratio) in every channel, with no colour
     // conversion.
     void set_monochromatic(bool on) { monochromatic_ = on; }
+    // Achromatic rendering (SceneFeatures::achromatic): every path is traced at the one
+    // wavelength `lambda` and carries colour(lambda) times a factor that does not depend on
+    // wavelength, so a sample's value is its average over the lanes (all alike) divided by
+    // colour(lambda), times the sensor's exact value for colour. No colour noise.
+    void set_achromatic(const Spectrum &colour, float lambda);
     // Also keep per-pixel first and second moments of the camera samples' output RGB, so that
     // get_image() adds a "variance" layer: the estimated variance of each pixel's mean
     // (s^2 / n). It assumes equal sample weights, which pbrt's filter importance sampling gives
@@ -132,6 +138,7 @@ class Film {
     std::string filename_;
     bool save_fp16_;
     bool monochromatic_ = false;
+    std::optional<RGB> achromatic_rgb_; // per unit of a sample's average, when achromatic
 
     std::vector<Pixel> pixels_;
     std::vector<Moments> moments_; // empty unless enable_variance()

@@ -42,6 +42,10 @@ PixelSensor::PixelSensor(const RGBColorSpace &output, float white_balance_temper
             white_balance(illuminant_white(white_balance_temperature), output.whitepoint().xy());
 }
 
+RGB PixelSensor::to_sensor_rgb(const Spectrum &s) const {
+    return RGB{inner_product(cie_x(), s), inner_product(cie_y(), s), inner_product(cie_z(), s)} * imaging_ratio_;
+}
+
 RGB PixelSensor::to_sensor_rgb(const SampledSpectrum &L, const SampledWavelengths &lambda) const {
     SampledSpectrum radiance = safe_div(L, lambda.pdf());
     return RGB{(cie_x().sample(lambda) * radiance).average(),

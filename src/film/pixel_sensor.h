@@ -7,6 +7,7 @@
 #include "spectral/color.h"
 #include "spectral/color_space.h"
 #include "spectral/sampled_wavelengths.h"
+#include "spectral/spectrum.h"
 
 namespace caustica {
 
@@ -21,6 +22,9 @@ class PixelSensor {
     // cmf(l) L(l) / pdf(l), times the imaging ratio. No division by CIE_Y_integral: lights are
     // normalised photometrically (radiance of "L" [1 1 1] has Y = 1), as in pbrt-v4.
     RGB to_sensor_rgb(const SampledSpectrum &L, const SampledWavelengths &lambda) const;
+    // What that estimate converges to for the spectrum s: the integrals of cmf(l) s(l), times
+    // the imaging ratio.
+    RGB to_sensor_rgb(const Spectrum &s) const;
 
     // Sensor values to XYZ: the white balance, or the identity.
     const Matrix3 &xyz_from_sensor_rgb() const { return xyz_from_sensor_rgb_; }

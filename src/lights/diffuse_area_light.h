@@ -16,6 +16,7 @@ class DiffuseAreaLight final : public Light {
                      bool two_sided);
 
     LightType type() const override { return LightType::Area; }
+    const Spectrum *emission_spectrum() const override { return radiance_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
     std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
                                            const SampledWavelengths &lambda) const override;

@@ -15,6 +15,7 @@ class DistantLight final : public Light {
     DistantLight(const Transform &render_from_light, SpectrumPtr radiance, float scale);
 
     LightType type() const override { return LightType::DeltaDirection; }
+    const Spectrum *emission_spectrum() const override { return radiance_.get(); }
     void preprocess(const Bounds3f &scene_bounds) override;
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
     std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,

@@ -11,6 +11,8 @@
 
 namespace caustica {
 
+class Spectrum;
+
 class Medium;
 
 enum class LightType {
@@ -49,6 +51,9 @@ class Light {
     virtual LightType type() const = 0;
     // Called once after the scene is built (distant and infinite lights need its bounds).
     virtual void preprocess(const Bounds3f &scene_bounds) { (void)scene_bounds; }
+    // The spectrum of which everything the light emits is a multiple (its colour), or null when
+    // the colour varies over the light (an environment image). See SceneFeatures::achromatic.
+    virtual const Spectrum *emission_spectrum() const { return nullptr; }
     // Total emitted power at the wavelengths, for light selection by power.
     virtual SampledSpectrum phi(const SampledWavelengths &lambda) const = 0;
 

@@ -13,6 +13,7 @@ class PointLight final : public Light {
     PointLight(const Transform &render_from_light, SpectrumPtr intensity, float scale);
 
     LightType type() const override { return LightType::DeltaPosition; }
+    const Spectrum *emission_spectrum() const override { return intensity_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
     std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
                                            const SampledWavelengths &lambda) const override;

@@ -16,6 +16,7 @@ class SpotLight final : public Light {
               float total_width_degrees, float falloff_start_degrees);
 
     LightType type() const override { return LightType::DeltaPosition; }
+    const Spectrum *emission_spectrum() const override { return intensity_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
     std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
                                            const SampledWavelengths &lambda) const override;

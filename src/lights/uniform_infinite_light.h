@@ -12,6 +12,7 @@ class UniformInfiniteLight final : public Light {
     UniformInfiniteLight(SpectrumPtr radiance, float scale);
 
     LightType type() const override { return LightType::Infinite; }
+    const Spectrum *emission_spectrum() const override { return radiance_.get(); }
     void preprocess(const Bounds3f &scene_bounds) override;
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
     std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,

@@ -21,6 +21,11 @@ class ConductorMaterial final : public Material {
                   ScratchBuffer &scratch) const override;
     bool has_specular_lobe() const override { return roughness_.may_be_smooth(); }
     bool has_non_specular_lobe() const override { return roughness_.may_be_rough(); }
+    bool is_wavelength_independent() const override {
+        for (const SpectrumTexturePtr &t : {eta_, k_, reflectance_})
+            if (t && !t->is_wavelength_independent()) return false;
+        return true;
+    }
 
   private:
     SpectrumTexturePtr eta_, k_, reflectance_;

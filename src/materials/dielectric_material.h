@@ -41,6 +41,7 @@ class DielectricMaterial final : public Material {
         return sigma_a_ ? sigma_a_->sample(lambda) : SampledSpectrum();
     }
     bool has_interior_absorption() const override { return sigma_a_ != nullptr; }
+    bool is_wavelength_independent() const override { return is_flat(*eta_) && (!sigma_a_ || is_flat(*sigma_a_)); }
 
   private:
     SpectrumPtr eta_;
@@ -58,6 +59,7 @@ class ThinDielectricMaterial final : public Material {
                   ScratchBuffer &scratch) const override;
     bool has_specular_lobe() const override { return true; }
     bool has_non_specular_lobe() const override { return false; }
+    bool is_wavelength_independent() const override { return is_flat(*eta_); }
 
   private:
     SpectrumPtr eta_;

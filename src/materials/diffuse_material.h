@@ -11,6 +11,7 @@ class DiffuseMaterial final : public Material {
     explicit DiffuseMaterial(SpectrumTexturePtr reflectance) : reflectance_(std::move(reflectance)) {}
     BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                   ScratchBuffer &scratch) const override;
+    bool is_wavelength_independent() const override { return reflectance_->is_wavelength_independent(); }
 
   private:
     SpectrumTexturePtr reflectance_;

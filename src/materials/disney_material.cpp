@@ -237,6 +237,17 @@ DisneyParameters DisneyMaterial::parameters(const TextureEvalContext &ctx, const
     return p;
 }
 
+bool DisneyMaterial::is_wavelength_independent() const {
+    if (!textures_.base_color->is_wavelength_independent() || !is_flat(*eta_) || (sigma_a_ && !is_flat(*sigma_a_)))
+        return false;
+    if (!subsurface_.enabled) return true;
+    const DisneySubsurface &s = subsurface_;
+    if (s.scatter_distance && !s.scatter_distance->is_wavelength_independent()) return false;
+    for (const SpectrumPtr &spectrum : {s.walk_absorption, s.sigma_a, s.sigma_s_reduced})
+        if (spectrum && !is_flat(*spectrum)) return false;
+    return !s.medium || s.medium->is_wavelength_independent();
+}
+
 BSDF DisneyMaterial::get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                               ScratchBuffer &scratch) const {
     auto *bxdf = scratch.make<DisneyBxDF>(parameters(TextureEvalContext(si), lambda));

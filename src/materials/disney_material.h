@@ -89,6 +89,7 @@ class DisneyMaterial final : public Material {
         return sigma_a_ ? sigma_a_->sample(lambda) : SampledSpectrum();
     }
     bool has_interior_absorption() const override { return sigma_a_ != nullptr; }
+    bool is_wavelength_independent() const override;
     bool has_subsurface() const override { return subsurface_.enabled; }
     bool has_interior_medium() const override {
         return subsurface_.enabled && subsurface_.model == SubsurfaceModel::RandomWalk;

@@ -35,6 +35,10 @@ class Material {
         return {};
     }
     virtual bool has_interior_absorption() const { return false; }
+    // Scene analysis: true when nothing the material evaluates (textures, indices, interior
+    // coefficients) depends on wavelength, so that it scatters every wavelength alike. False
+    // unless a material shows it (see SceneFeatures::achromatic).
+    virtual bool is_wavelength_independent() const { return false; }
     // A participating medium that fills the material's interior (the random-walk subsurface
     // volume of the Disney material). Paths that cross the surface inwards enter it, whatever the
     // shape's MediumInterface says (medium_interface.h). When its coefficients come from textures

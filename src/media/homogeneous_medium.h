@@ -16,6 +16,7 @@ class HomogeneousMedium final : public Medium {
     SampledSpectrum sigma_s(const SampledWavelengths &lambda) const override;
     const HenyeyGreenstein &phase() const override { return phase_; }
     SampledSpectrum transmittance(float distance, const SampledWavelengths &lambda) const override;
+    bool is_wavelength_independent() const override { return is_flat(*sigma_a_) && is_flat(*sigma_s_); }
     MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
                                 float u_distance) const override;
 

@@ -47,6 +47,9 @@ class Medium {
     // The material whose interior this medium is when the material made it for one entry point
     // (SampledHomogeneousMedium), else null.
     virtual const Material *interior_of() const { return nullptr; }
+    // Scene analysis: true when its coefficients do not depend on wavelength (see
+    // SceneFeatures::achromatic); false unless a medium shows it.
+    virtual bool is_wavelength_independent() const { return false; }
 
   protected:
     // Media are owned through MediumPtr (made by make_shared, which destroys the concrete type)

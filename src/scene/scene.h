@@ -35,6 +35,12 @@ struct SceneFeatures {
     bool subsurface = false;
     SceneProbe probe;                    // what camera and lights see (scene_probe.h)
     bool absorbing_interiors = false;
+    // Every material and medium scatters all wavelengths alike, and every light emits the same
+    // colour (multiples of one spectrum). A path's radiance is then that colour times a factor
+    // that does not depend on wavelength, so the scene is rendered at one wavelength, and the
+    // film gives each sample the colour's exact sensor value: faster, and without the colour
+    // noise of sampling wavelengths (Scene::achromatic_wavelength, Film::set_achromatic).
+    bool achromatic = false;
 };
 
 // Command-line choices that override the scene file.
@@ -45,6 +51,7 @@ struct RenderOverrides {
     uint64_t seed = 0;
     float wavelength = 0;       // > 0: monochromatic rendering at this wavelength (nm)
     bool single_wavelength = false; // one wavelength per path instead of hero sampling
+    bool spectral = false;      // sample wavelengths even for an achromatic scene
 };
 
 class Scene {
@@ -66,6 +73,9 @@ class Scene {
     std::string output_filename;         // Film "filename"
     SceneFeatures features;
     RenderOverrides overrides;
+    // > 0: every path is traced at this wavelength (nm), the achromatic scene's (see
+    // SceneFeatures::achromatic) where its lights' colour is largest; 0: wavelengths are sampled.
+    float achromatic_wavelength = 0;
 
     // Scene statistics for `caustica info`.
     size_t shape_count = 0, triangle_count = 0, material_count = 0, medium_count = 0,

@@ -4,13 +4,16 @@
 #include "core/error.h"
 #include "film/film.h"
 #include "film/filter.h"
+#include "lights/light.h"
 #include "lights/light_factory.h"
 #include "materials/material_factory.h"
+#include "media/medium.h"
 #include "media/medium_factory.h"
 #include "parser/scene_description.h"
 #include "sampler/sampler_factory.h"
 #include "geometry/shape_factory.h"
 #include "scene/scene.h"
+#include "spectral/spectrum.h"
 #include "textures/texture_factory.h"
 
 #include <map>
@@ -277,6 +280,31 @@ void add_lights(const SceneDescription &d, const MediumTable &media, Scene &scen
         if (light->type() == LightType::Infinite) scene.infinite_lights.push_back(light.get());
 }
 
+// The colour all the scene's light is emitted in when the scene is achromatic (see
+// SceneFeatures::achromatic), else null.
+const Spectrum *achromatic_colour(const Scene &scene) {
+    for (const MaterialPtr &m : scene.materials)
+        if (!m->is_wavelength_independent()) return nullptr;
+    for (const MediumPtr &m : scene.media)
+        if (!m->is_wavelength_independent()) return nullptr;
+    const Spectrum *colour = nullptr;
+    for (const LightPtr &light : scene.lights) {
+        const Spectrum *emitted = light->emission_spectrum();
+        if (!emitted) return nullptr;
+        if (!colour) colour = emitted;
+        else if (!is_multiple_of(*emitted, *colour)) return nullptr;
+    }
+    return colour;
+}
+
+// The wavelength (an integer nm) where a spectrum is largest.
+float peak_wavelength(const Spectrum &s) {
+    float peak = LambdaMin;
+    for (float lambda = LambdaMin; lambda <= LambdaMax; ++lambda)
+        if (s(lambda) > s(peak)) peak = lambda;
+    return peak;
+}
+
 void analyse_features(const SceneDescription &d, Scene &scene) {
     SceneFeatures &f = scene.features;
     for (const MaterialPtr &m : scene.materials) {
@@ -361,6 +389,13 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     for (const LightPtr &light : scene->lights) light->preprocess(bounds);
     scene->light_sampler = std::make_unique<PowerLightSampler>(scene->lights);
     analyse_features(d, *scene);
+    const Spectrum *colour = achromatic_colour(*scene);
+    scene->features.achromatic = colour != nullptr;
+    // Overrides that ask for wavelengths (monochromatic, single or sampled) come first.
+    if (colour && ov.wavelength <= 0 && !ov.single_wavelength && !ov.spectral) {
+        scene->achromatic_wavelength = peak_wavelength(*colour);
+        scene->film->set_achromatic(*colour, scene->achromatic_wavelength);
+    }
     if (scene->integrator_name == "auto") {
         IntegratorChoice choice = choose_auto_integrator(scene->features, scene->camera->models_importance());
         scene->integrator_name = choice.name;
