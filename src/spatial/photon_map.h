@@ -10,7 +10,7 @@
 // Queries see photons in an order that depends only on the set of photons, never on which
 // thread traced which path or on the thread count. Rendered images thus do not change with the
 // thread count, although floating-point sums depend on their order. Both searches sort the
-// photons by their bytes (the grid within each bucket, the tree before it is built), and then
+// photons by value (the grid within each bucket, the tree before it is built), and then
 // visit them in an order fixed by the structure.
 //
 // A point is found when its float squared distance to the center, (dx*dx + dy*dy) + dz*dz, is
@@ -60,10 +60,10 @@ template <class Record> class PhotonMap {
         storage_.close();
         if (search_ == PhotonSearch::HashGrid) {
             grid_.build(storage_.begin(), storage_.end(), max_radius, [](const Photon &photon) { return photon.p; },
-                        bytes_less);
+                        value_less);
             return;
         }
-        std::sort(storage_.begin(), storage_.end(), bytes_less);
+        std::sort(storage_.begin(), storage_.end(), value_less);
         std::vector<Vec3f> positions(storage_.size());
         for (size_t i = 0; i < positions.size(); ++i) positions[i] = storage_[i].p;
         tree_.build(positions, max_radius); // the tree keeps a copy
@@ -95,7 +95,7 @@ template <class Record> class PhotonMap {
   private:
     // A total order on the photons' values: their 32-bit words compared in turn (inline, unlike
     // memcmp, which made the sort twice as slow; the first word, x, nearly always decides).
-    static bool bytes_less(const Photon &a, const Photon &b) {
+    static bool value_less(const Photon &a, const Photon &b) {
         using Words = std::array<uint32_t, sizeof(Photon) / sizeof(uint32_t)>;
         const Words wa = std::bit_cast<Words>(a), wb = std::bit_cast<Words>(b);
         return std::lexicographical_compare(wa.begin(), wa.end(), wb.begin(), wb.end());

@@ -92,6 +92,9 @@ TEST(PhotonIntegratorParameters, OutOfRangeValuesAreErrorsAtTheirLocation) {
         {"\"sppm\" \"string photonsearch\" [ \"octree\" ]", "photonsearch"},
         {"\"sppm\" \"integer photonsperiteration\" [ 0 ]", "photonsperiteration"},
         {"\"vcm\" \"string lightvertices\" [ \"discard\" ]", "lightvertices"},
+        // Photons keep path lengths in 15 bits.
+        {"\"vcm\" \"integer maxdepth\" [ 40000 ]", "maxdepth"},
+        {"\"sppm\" \"integer maxdepth\" [ 40000 ]", "maxdepth"},
     };
     for (const auto &c : cases) {
         const std::string scene = dir + "/scene.pbrt";
