@@ -8,6 +8,7 @@
 #include "integrators/common/merge_radius.h"
 #include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
+#include "integrators/common/photon_search_parameter.h"
 #include "integrators/common/photon_side.h"
 #include "integrators/common/profile_subsurface.h"
 #include "integrators/common/wavelength_groups.h"
@@ -54,8 +55,7 @@ SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
       photons_per_iteration_(params.get_one_int("photonsperiteration", -1)),
       wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
       seed_(uint64_t(params.get_one_int("seed", 0)) + scene.overrides.seed),
-      photon_search_(PhotonSearch::HashGrid) {
-    const std::string photon_search = params.get_one_string("photonsearch", "hashgrid");
+      photon_search_(read_photon_search(params)) {
     if (max_depth_ < 0 || max_depth_ > StoredPhoton::MaxDepth)
         throw InputError(params.location("maxdepth"),
                          "\"maxdepth\" must lie in [0, " + std::to_string(StoredPhoton::MaxDepth) + "]");
@@ -67,9 +67,6 @@ SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
                          "\"photonsperiteration\" must be positive (or -1: one per pixel)");
     if (wavelength_groups_ < 1 || wavelength_groups_ > 64)
         throw InputError(params.location("wavelengthgroups"), "\"wavelengthgroups\" must lie in [1, 64]");
-    if (photon_search != "hashgrid" && photon_search != "flann")
-        throw InputError(params.location("photonsearch"), "\"photonsearch\" must be \"hashgrid\" or \"flann\"");
-    if (photon_search == "flann") photon_search_ = PhotonSearch::FlannKdTree;
     params.report_unused();
 }
 

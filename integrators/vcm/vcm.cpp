@@ -6,6 +6,7 @@
 #include "integrators/common/merge_radius.h"
 #include "integrators/common/path_segment.h"
 #include "integrators/common/path_vertex.h"
+#include "integrators/common/photon_search_parameter.h"
 #include "integrators/common/profile_subsurface.h"
 #include "integrators/common/splat_scale.h"
 #include "integrators/common/transmittance.h"
@@ -31,8 +32,7 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
     : mode_(mode), max_depth_(params.get_one_int("maxdepth", 5)),
       base_radius_(params.get_one_float("radius", 0)), alpha_(params.get_one_float("alpha", 0.75f)),
       wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
-      photon_search_(PhotonSearch::HashGrid) {
-    const std::string photon_search = params.get_one_string("photonsearch", "hashgrid");
+      photon_search_(read_photon_search(params)) {
     const std::string light_vertices = params.get_one_string("lightvertices", "store");
     const char *name = mode == Mode::VertexConnectionMerging ? "vcm" : "bpm";
     if (max_depth_ < 0 || max_depth_ > Photon::MaxPathLength)
@@ -44,9 +44,6 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
         throw InputError(params.location("alpha"), "\"alpha\" must lie in (0, 1]");
     if (wavelength_groups_ < 1 || wavelength_groups_ > 64)
         throw InputError(params.location("wavelengthgroups"), "\"wavelengthgroups\" must lie in [1, 64]");
-    if (photon_search != "hashgrid" && photon_search != "flann")
-        throw InputError(params.location("photonsearch"), "\"photonsearch\" must be \"hashgrid\" or \"flann\"");
-    if (photon_search == "flann") photon_search_ = PhotonSearch::FlannKdTree;
     if (light_vertices != "store" && light_vertices != "retrace")
         throw InputError(params.location("lightvertices"), "\"lightvertices\" must be \"store\" or \"retrace\"");
     retrace_light_paths_ = light_vertices == "retrace";

@@ -291,8 +291,9 @@ const Spectrum *achromatic_colour(const Scene &scene) {
     for (const LightPtr &light : scene.lights) {
         const Spectrum *emitted = light->emission_spectrum();
         if (!emitted) return nullptr;
+        // The lights of one emissive shape share its spectrum: one comparison each.
         if (!colour) colour = emitted;
-        else if (!is_multiple_of(*emitted, *colour)) return nullptr;
+        else if (emitted != colour && !is_multiple_of(*emitted, *colour)) return nullptr;
     }
     return colour;
 }

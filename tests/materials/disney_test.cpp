@@ -924,12 +924,7 @@ class DisneyMaterialTest : public ::testing::Test {
         return disney;
     }
     int error_line(std::vector<ParsedParameter> params) {
-        try {
-            create(std::move(params));
-        } catch (const InputError &e) {
-            return e.location().line;
-        }
-        return -1;
+        return input_error_line([&] { create(std::move(params)); });
     }
     DisneyParameters at(const DisneyMaterial &m, float u = 0.5f, float v = 0.5f) const {
         return m.parameters(TextureEvalContext(surface_at(u, v)), lambda_);

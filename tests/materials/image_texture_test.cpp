@@ -57,12 +57,7 @@ class ImageTextureTest : public ::testing::Test {
     }
     // The line of the InputError that creating the float texture throws, or -1.
     int error_line(std::vector<ParsedParameter> params) {
-        try {
-            float_texture(std::move(params));
-        } catch (const InputError &e) {
-            return e.location().line;
-        }
-        return -1;
+        return input_error_line([&] { float_texture(std::move(params)); });
     }
 
     std::filesystem::path dir_;

@@ -38,12 +38,7 @@ class MaterialTest : public ::testing::Test {
     }
     // Line of the InputError that creating the material throws, or -1 if it does not throw.
     int error_line(const std::string &type, std::vector<ParsedParameter> params) {
-        try {
-            create(type, std::move(params));
-        } catch (const InputError &e) {
-            return e.location().line;
-        }
-        return -1;
+        return input_error_line([&] { create(type, std::move(params)); });
     }
     // f |cos| / pdf of a sample from the material's BSDF.
     SampledSpectrum weight(const Material &m, Vec3f wo, const SampledWavelengths &lambda,

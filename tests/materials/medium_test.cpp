@@ -219,6 +219,7 @@ TEST(HomogeneousMedium, FreeFlightDistancesFollowTheLanesExtinction) {
 TEST(MediumFactory, ReadsPbrtParametersAndRejectsBadValues) {
     using testing::dictionary;
     using testing::numbers;
+    using testing::input_error_line;
     using testing::strings;
     SampledWavelengths lambda = SampledWavelengths::sample_visible(0.5f);
 
@@ -236,12 +237,8 @@ TEST(MediumFactory, ReadsPbrtParametersAndRejectsBadValues) {
     EXPECT_FLOAT_EQ(scaled->phase().g(), 0.6f);
 
     auto error_line = [&](const std::string &type, std::vector<ParsedParameter> params) {
-        try {
-            create_medium(type, dictionary(std::move(params)), SourceLocation{"test.pbrt", 1, 1});
-        } catch (const InputError &e) {
-            return e.location().line;
-        }
-        return -1;
+        return input_error_line(
+            [&] { create_medium(type, dictionary(std::move(params)), SourceLocation{"test.pbrt", 1, 1}); });
     };
     EXPECT_EQ(error_line("homogeneous", {numbers("float", "g", {1}, 7)}), 7);
     EXPECT_EQ(error_line("homogeneous", {numbers("float", "g", {-1.5}, 7)}), 7);

@@ -2,6 +2,7 @@
 // fictitious "test.pbrt" so error locations can be checked.
 #pragma once
 
+#include "core/error.h"
 #include "params/parameters.h"
 
 #include <vector>
@@ -40,6 +41,16 @@ inline ParameterDictionary dictionary(std::vector<ParsedParameter> params) {
 inline const SourceLocation &directive_location() {
     static const SourceLocation loc{"test.pbrt", 1, 1};
     return loc;
+}
+
+// The line of the InputError that create() throws, or -1 if it throws none.
+template <class Create> int input_error_line(Create &&create) {
+    try {
+        create();
+    } catch (const InputError &e) {
+        return e.location().line;
+    }
+    return -1;
 }
 
 } // namespace caustica::testing
