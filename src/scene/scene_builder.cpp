@@ -280,30 +280,36 @@ void add_lights(const SceneDescription &d, const MediumTable &media, Scene &scen
         if (light->type() == LightType::Infinite) scene.infinite_lights.push_back(light.get());
 }
 
-// The colour all the scene's light is emitted in when the scene is achromatic (see
-// SceneFeatures::achromatic), else null.
-const Spectrum *achromatic_colour(const Scene &scene) {
-    for (const MaterialPtr &m : scene.materials)
-        if (!m->is_wavelength_independent()) return nullptr;
-    for (const MediumPtr &m : scene.media)
-        if (!m->is_wavelength_independent()) return nullptr;
-    const Spectrum *colour = nullptr;
-    for (const LightPtr &light : scene.lights) {
-        const Spectrum *emitted = light->emission_spectrum();
-        if (!emitted) return nullptr;
-        // The lights of one emissive shape share its spectrum: one comparison each.
-        if (!colour) colour = emitted;
-        else if (emitted != colour && !is_multiple_of(*emitted, *colour)) return nullptr;
-    }
-    return colour;
-}
-
 // The wavelength (an integer nm) where a spectrum is largest.
 float peak_wavelength(const Spectrum &s) {
     float peak = LambdaMin;
     for (float lambda = LambdaMin; lambda <= LambdaMax; ++lambda)
         if (s(lambda) > s(peak)) peak = lambda;
     return peak;
+}
+
+// The colour all the scene's light is emitted in when the scene is achromatic (see
+// SceneFeatures::achromatic), else null. Lights that emit nothing have no colour to agree on,
+// and with no light at all there is no colour either (the film could not be given one).
+const Spectrum *achromatic_colour(const Scene &scene) {
+    for (const MaterialPtr &m : scene.materials)
+        if (!m->is_wavelength_independent()) return nullptr;
+    for (const MediumPtr &m : scene.media)
+        if (!m->is_wavelength_independent()) return nullptr;
+    const Spectrum *colour = nullptr, *dark = nullptr;
+    for (const LightPtr &light : scene.lights) {
+        const Spectrum *emitted = light->emission_spectrum();
+        if (!emitted) return nullptr;
+        // The lights of one emissive shape share its spectrum: one test each.
+        if (emitted == colour || emitted == dark) continue;
+        if (!((*emitted)(peak_wavelength(*emitted)) > 0)) {
+            dark = emitted;
+            continue;
+        }
+        if (!colour) colour = emitted;
+        else if (!is_multiple_of(*emitted, *colour)) return nullptr;
+    }
+    return colour;
 }
 
 void analyse_features(const SceneDescription &d, Scene &scene) {

@@ -66,6 +66,15 @@ Material "diffuse" "rgb reflectance" [ 0.5 0.5 0.5 ]
 Shape "sphere"
 )");
     EXPECT_TRUE(blackbodies->features.achromatic);
+    // A light that emits nothing has no colour to disagree with, but gives none either.
+    EXPECT_TRUE(build(room("LightSource \"point\" \"rgb I\" [ 0 0 0 ]"
+                           " \"point3 from\" [ 0 1 0 ]\n"))
+                    ->features.achromatic);
+    auto dark = build(Header + R"(LightSource "point" "rgb I" [ 0 0 0 ] "point3 from" [ 0 1 0 ]
+Material "diffuse" "rgb reflectance" [ 0.5 0.5 0.5 ]
+Shape "sphere"
+)");
+    EXPECT_FALSE(dark->features.achromatic);
 }
 
 TEST(AchromaticScene, AnythingColouredOrDispersiveDisqualifies) {
