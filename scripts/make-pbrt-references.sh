@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Renders the pbrt-v4 references of the hard-transport suite (scenes/hard, tested by
-# tests/integrators/hard_transport_test.cpp) into tests/data/pbrt-v4/hard/. Not part of CI and
+# Renders the pbrt-v4 references of the hard-transport scenes (scenes/hard; see
+# tests/data/pbrt-v4/hard/README.md) into tests/data/pbrt-v4/hard/. Not part of CI and
 # not needed by any test: it needs a pbrt-v4 binary (PBRT, default ../shared/tools/pbrt-v4/pbrt)
 # and oiiotool, and takes about half an hour on 2 cores.
 #
 # Each scene is rendered twice by pbrt-v4 with the integrator its file names (volpath in media,
 # lightpath where only light paths reach the pixels, bdpt on surfaces), with different seeds. The
 # stored EXR holds their mean as R, G, B and half their difference as difference.R/G/B: the test
-# estimates the reference's own variance from it exactly as it does its renders' (per pixel, and
-# per block for the correlation that splatting brings).
+# can estimate the reference's own variance from it exactly as it does its renders' (per pixel,
+# and per block for the correlation that splatting brings).
 #
 # Usage: scripts/make-pbrt-references.sh [SCENE...]   (default: every scene in the table)
 set -euo pipefail
@@ -36,12 +36,13 @@ near-specular-glass 4096"
 want=("$@")
 while read -r scene spp; do
   if [ ${#want[@]} -gt 0 ] && [[ ! " ${want[*]} " == *" $scene "* ]]; then continue; fi
+  seeds=()
   for seed in 1 2; do
     # This pbrt-v4 build has crashed now and then (a segmentation fault in one of several runs
     # of fog-small-area); a crashed run is rendered again with the next seed.
     for attempt in 0 1 2; do
       "$PBRT" --quiet --nthreads 2 --spp "$spp" --seed "$((seed + 10 * attempt))" \
-        --outfile "$tmp/$scene.$seed.exr" "scenes/hard/$scene.pbrt" && break
+        --outfile "$tmp/$scene.$seed.exr" "scenes/hard/$scene.pbrt" && { seeds+=("$((seed + 10 * attempt))"); break; }
       [ "$attempt" -lt 2 ] || exit 1
     done
   done
@@ -49,7 +50,7 @@ while read -r scene spp; do
   oiiotool "$tmp/$scene.1.exr" --ch R,G,B "$tmp/$scene.2.exr" --ch R,G,B --sub --mulc 0.5 \
     --chnames difference.R,difference.G,difference.B -o "$tmp/difference.exr"
   oiiotool "$tmp/mean.exr" "$tmp/difference.exr" --chappend -d float --compression zip \
-    --attrib "pbrt-v4:command" "pbrt --nthreads 2 --spp $spp --seed 1,2 scenes/hard/$scene.pbrt" \
+    --attrib "pbrt-v4:command" "pbrt --nthreads 2 --spp $spp --seed $(IFS=,; echo "${seeds[*]}") scenes/hard/$scene.pbrt" \
     -o "$out/$scene.exr"
   echo "$scene: $spp spp x 2, $(oiiotool "$out/$scene.exr" --ch R,G,B --printstats | grep Avg)"
 done <<< "$table"
