@@ -102,6 +102,15 @@ float inner_product(const Spectrum &a, const Spectrum &b) {
 
 float inner_product_y(const Spectrum &s) { return inner_product(s, cie_y()); }
 
+float peak_wavelength(const Spectrum &s) {
+    float peak = LambdaMin;
+    for (float lambda = LambdaMin; lambda <= LambdaMax; ++lambda)
+        if (s(lambda) > s(peak)) peak = lambda;
+    return peak;
+}
+
+float visible_integral(const Spectrum &s) { return inner_product(s, ConstantSpectrum(1)); }
+
 bool is_flat(const Spectrum &s) { return s.is_constant() || is_multiple_of(s, ConstantSpectrum(1)); }
 
 bool is_multiple_of(const Spectrum &b, const Spectrum &a) {

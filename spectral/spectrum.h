@@ -106,5 +106,9 @@ float inner_product(const Spectrum &a, const Spectrum &b);
 // Integral of a spectrum against CIE Y (nm units): inner_product(s, cie_y()). Lights divide by
 // it to give a spectrum a prescribed photometric power (pbrt-v4's SpectrumToPhotometric).
 float inner_product_y(const Spectrum &s);
+// The wavelength (an integer nm) where a spectrum is largest.
+float peak_wavelength(const Spectrum &s);
+// The spectrum integrated over [LambdaMin, LambdaMax] (1 nm steps, nm units).
+float visible_integral(const Spectrum &s);
 
 } // namespace caustica

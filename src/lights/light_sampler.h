@@ -37,7 +37,7 @@ class UniformLightSampler final : public LightSampler {
 };
 
 // Lights chosen in proportion to their emitted power (pbrt-v4's PowerLightSampler). Power is
-// phi() estimated over the visible range from four fixed wavelengths; lights are therefore to be
+// phi() integrated over the visible spectrum (light_sampler.cpp); lights are therefore to be
 // preprocessed (scene bounds known) before the sampler is built. If every light has zero power,
 // falls back to uniform selection.
 class PowerLightSampler final : public LightSampler {

@@ -20,6 +20,7 @@ class ConductorMaterial final : public Material {
     BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                   ScratchBuffer &scratch) const override;
     bool has_specular_lobe() const override { return roughness_.may_be_smooth(); }
+    bool forms_caustics() const override { return roughness_.may_focus_light(); }
     bool has_non_specular_lobe() const override { return roughness_.may_be_rough(); }
     bool is_wavelength_independent() const override {
         for (const SpectrumTexturePtr &t : {eta_, k_, reflectance_})

@@ -36,6 +36,7 @@ class DielectricMaterial final : public Material {
                   ScratchBuffer &scratch) const override;
     bool is_dispersive() const override { return dispersive_; }
     bool has_specular_lobe() const override { return specular_; }
+    bool forms_caustics() const override { return specular_ || roughness_.may_focus_light(); }
     bool has_non_specular_lobe() const override { return roughness_.may_be_rough(); }
     SampledSpectrum interior_sigma_a(const SampledWavelengths &lambda) const override {
         return sigma_a_ ? sigma_a_->sample(lambda) : SampledSpectrum();

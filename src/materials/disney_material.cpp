@@ -1,5 +1,7 @@
 #include "materials/disney_material.h"
 
+#include "materials/microfacet_roughness.h"
+
 #include "geometry/interaction.h"
 #include "materials/dielectric_material.h"
 #include "materials/random_walk_albedo.h"
@@ -198,13 +200,16 @@ DisneyMaterial::DisneyMaterial(DisneyTextures textures, SpectrumPtr eta, bool th
     bool index_matched = std::abs(lo - 1) < DielectricBxDF::IndexMatchedTolerance &&
                          std::abs(hi - 1) < DielectricBxDF::IndexMatchedTolerance;
     if (!roughness || !anisotropic) {
-        specular_ = true;
+        specular_ = focuses_ = true;
     } else {
+        const TrowbridgeReitzDistribution d = DisneyBxDF::specular_distribution(*roughness, *anisotropic);
+        focuses_ = std::max(d.alpha_x(), d.alpha_y()) < MicrofacetRoughness::NearSpecularAlpha;
         float thin_roughness = DisneyBxDF::thin_transmission_roughness(*roughness, reference_eta_);
         specular_ = DisneyBxDF::specular_distribution(*roughness, *anisotropic).effectively_smooth() ||
                     (thin_ && DisneyBxDF::specular_distribution(thin_roughness, *anisotropic).effectively_smooth()) ||
                     (may_refract && index_matched);
     }
+    focuses_ = focuses_ || specular_;
 }
 
 DisneyParameters DisneyMaterial::parameters(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const {

@@ -85,6 +85,7 @@ class DisneyMaterial final : public Material {
                   ScratchBuffer &scratch) const override;
     bool is_dispersive() const override { return dispersive_; }
     bool has_specular_lobe() const override { return specular_; }
+    bool forms_caustics() const override { return focuses_; }
     SampledSpectrum interior_sigma_a(const SampledWavelengths &lambda) const override {
         return sigma_a_ ? sigma_a_->sample(lambda) : SampledSpectrum();
     }
@@ -143,6 +144,7 @@ class DisneyMaterial final : public Material {
     // per point, and only when a tint needs it).
     float constant_luminance_ = -1;
     bool dispersive_ = false, specular_ = false;
+    bool focuses_ = false; // forms_caustics()
 };
 
 // The coefficients of Jensen's dipole that reflects `albedo` (its total diffuse reflectance R_d is

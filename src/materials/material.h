@@ -21,6 +21,9 @@ class Material {
     virtual bool is_dispersive() const { return false; }
     // Does any of its lobes include a delta (perfectly specular) component?
     virtual bool has_specular_lobe() const { return false; }
+    // Can it focus light into a caustic: a specular lobe, or a near-specular one
+    // (MicrofacetRoughness::may_focus_light)?
+    virtual bool forms_caustics() const { return has_specular_lobe(); }
     // Does any of its lobes scatter diffusely or glossily (so it can receive a caustic)?
     virtual bool has_non_specular_lobe() const { return true; }
     virtual bool has_subsurface() const { return false; }

@@ -27,6 +27,16 @@ struct MicrofacetRoughness {
         if (!u->constant_value() || !v->constant_value()) return true;
         return distribution(TextureEvalContext()).effectively_smooth();
     }
+    // Whether some point may be smooth enough to focus light into a caustic: a delta lobe, or a
+    // lobe so narrow (alpha below NearSpecularAlpha) that the paths through it are, for light
+    // transport, nearly specular: camera paths reach the light behind it by chance alone, and
+    // connections through it are almost always zero.
+    static constexpr float NearSpecularAlpha = 0.05f;
+    bool may_focus_light() const {
+        if (!u->constant_value() || !v->constant_value()) return true;
+        const TrowbridgeReitzDistribution d = distribution(TextureEvalContext());
+        return std::max(d.alpha_x(), d.alpha_y()) < NearSpecularAlpha;
+    }
     bool may_be_rough() const {
         if (!u->constant_value() || !v->constant_value()) return true;
         return !distribution(TextureEvalContext()).effectively_smooth();

@@ -27,8 +27,9 @@ struct SceneDescription;
 struct SceneFeatures {
     bool dispersive_materials = false;   // some dielectric's IOR varies with wavelength
     bool specular_surfaces = false;      // delta lobes
-    // Specular surfaces and non-specular ones that can receive what they focus: caustic
-    // (light - specular - diffuse) paths, which camera paths find only by chance.
+    // Surfaces that focus light (specular or near-specular: Material::forms_caustics) and
+    // non-specular ones that can receive what they focus: caustic (light - specular - diffuse)
+    // paths, which camera paths find only by chance.
     bool caustic_paths = false;
     bool media = false;
     bool medium_boundaries = false;      // shapes without a material, which rays pass through

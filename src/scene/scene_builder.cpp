@@ -280,14 +280,6 @@ void add_lights(const SceneDescription &d, const MediumTable &media, Scene &scen
         if (light->type() == LightType::Infinite) scene.infinite_lights.push_back(light.get());
 }
 
-// The wavelength (an integer nm) where a spectrum is largest.
-float peak_wavelength(const Spectrum &s) {
-    float peak = LambdaMin;
-    for (float lambda = LambdaMin; lambda <= LambdaMax; ++lambda)
-        if (s(lambda) > s(peak)) peak = lambda;
-    return peak;
-}
-
 // The colour all the scene's light is emitted in when the scene is achromatic (see
 // SceneFeatures::achromatic), else null. Lights that emit nothing have no colour to agree on,
 // and with no light at all there is no colour either (the film could not be given one).
@@ -314,9 +306,11 @@ const Spectrum *achromatic_colour(const Scene &scene) {
 
 void analyse_features(const SceneDescription &d, Scene &scene) {
     SceneFeatures &f = scene.features;
+    bool caustic_forming = false;
     for (const MaterialPtr &m : scene.materials) {
         f.dispersive_materials |= m->is_dispersive();
         f.specular_surfaces |= m->has_specular_lobe();
+        caustic_forming |= m->forms_caustics();
         f.subsurface |= m->has_subsurface();
         f.absorbing_interiors |= m->has_interior_absorption();
     }
@@ -324,7 +318,7 @@ void analyse_features(const SceneDescription &d, Scene &scene) {
     for (const MaterialPtr &m : scene.materials) f.media |= m->has_interior_medium();
     bool non_specular_surfaces = false;
     for (const MaterialPtr &m : scene.materials) non_specular_surfaces |= m->has_non_specular_lobe();
-    f.caustic_paths = f.specular_surfaces && non_specular_surfaces && !scene.lights.empty();
+    f.caustic_paths = caustic_forming && non_specular_surfaces && !scene.lights.empty();
     f.probe = probe_scene(scene);
 }
 
