@@ -3,10 +3,11 @@
 #include "camera/camera.h"
 #include "core/error.h"
 #include "integrators/bdpt/mis_weight.h"
-#include "integrators/common/path_segment.h"
+#include "integrators/common/light_path_start.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/profile_subsurface.h"
 #include "integrators/common/splat_scale.h"
+#include "integrators/common/subpath_walk.h"
 #include "integrators/common/tile_renderer.h"
 #include "integrators/common/transmittance.h"
 #include "materials/disney_material.h"
@@ -40,160 +41,92 @@ struct SubpathContext {
     PixelSampleContext &sample;
 };
 
-// The cosine that goes with a sampled direction wi at si: |wi . ns| for radiance, the
-// adjoint-corrected importance_cosine for importance.
-float subpath_cosine(TransportMode mode, const SurfaceInteraction &si, Vec3f wo, Vec3f wi) {
-    return mode == TransportMode::Radiance ? abs_dot(wi, si.shading.n) : importance_cosine(si, wo, wi);
-}
-
-// The subpath's last vertex, path[count - 1], entered a profile solid by the sample bs: its
-// predecessor's reverse density becomes the exit lobe's there (a walk from the other end would
-// leave the solid at this point), then the exit is sampled (profile_subsurface.h) and appended
-// as a vertex after a jump, and unless that vertex is the last one counted, a direction is
-// sampled from its exit lobe for the walk to follow (ray, pdf_fwd, medium). False when the
-// subpath ends before the exit.
-bool jump_through_profile(const SubpathContext &ctx, const DisneyMaterial &material, const BSDFSample &bs,
-                          TransportMode mode, bool last, PathVertex *path, int &count, SampledSpectrum &beta,
-                          float &pdf_fwd, Ray &ray, const Medium *&medium) {
-    Sampler &sampler = ctx.sample.sampler;
-    PathVertex &entry = path[count - 1];
-    const SurfaceInteraction &si = entry.si;
-    beta *= bs.f * (subpath_cosine(mode, si, si.wo, bs.wi) / bs.pdf);
-    const float exit_pdf_here = profile_exit_density(material, si, ctx.sample.scratch);
-    path[count - 2].pdf_rev = entry.convert_density(exit_pdf_here, path[count - 2]);
-    entry.pdf_rev = 1; // the reverse jump (PathVertex::after_jump)
-    std::optional<ProfileExit> exit =
-        sample_profile_exit(ctx.scene, material, si, ctx.lambda, sampler, ctx.sample.scratch, ctx.sample.rays);
-    if (!exit) return false;
-    beta *= exit->weight;
-    if (beta.is_black()) return false;
-    PathVertex &v = start_vertex(path[count++]);
-    v.type = PathVertexType::Surface;
-    v.after_jump = true;
-    v.jumps = entry.jumps + 1;
-    v.si = exit->si;
-    v.bsdf = exit->bsdf;
-    v.medium = medium;
-    v.beta = beta;
-    v.pdf_fwd = 1; // the jump
-    if (last) return true;
-    // The exit lobe's direction; the entry's reverse density stays the jump's.
-    auto next = v.bsdf.sample_f(v.si.wo, 0, sampler.get_2d(), mode);
-    if (!next) return false;
-    pdf_fwd = next->pdf;
-    beta *= next->f * (subpath_cosine(mode, v.si, v.si.wo, next->wi) / next->pdf);
-    medium = medium_after(v.si, next->wi, medium);
-    ray = v.si.spawn_ray(next->wi);
-    return !beta.is_black();
-}
-
 // Extends the subpath whose last vertex is path[count - 1] by following ray, whose direction
 // was sampled there with solid-angle density pdf_fwd, until max_count vertices exist; returns the
 // new count. beta is the throughput carried by the ray, medium the one it starts in. Camera
 // subpaths (Radiance) that leave the scene end in a vertex at infinity when there are environment
 // lights to receive.
-int random_walk(const SubpathContext &ctx, Ray ray, SampledSpectrum beta, float pdf_fwd,
+int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum &beta, float pdf_fwd,
                 TransportMode mode, const Medium *medium, PathVertex *path, int count, int max_count) {
     const Scene &scene = ctx.scene;
-    Sampler &sampler = ctx.sample.sampler;
-    const Material *absorbing_interior = nullptr;
-    FreeFlightMIS free_flight;
+    SubpathWalk walk(scene, mode, ctx.lambda, ctx.sample.sampler, ctx.sample.scratch, ctx.sample.rays, true);
+    walk.start(ray, medium, beta);
     // Vertices that count towards max_count: a jump's exit shares its entry's (see after_jump).
     auto counted = [&] { return count - path[count - 1].jumps; };
     while (counted() < max_count) {
-        SurfaceInteraction si;
-        ++ctx.sample.rays;
-        bool hit = scene.intersect(ray, &si);
-        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               ctx.lambda, sampler, free_flight);
-        beta *= segment.weight;
-        if (beta.is_black()) break;
+        const WalkEvent event = walk.advance();
+        if (event == WalkEvent::Ended) break;
         PathVertex &prev = path[count - 1];
-        if (segment.scattered) {
-            // A medium vertex. Its phase function is sampled exactly (value = density), so the
-            // throughput is unchanged, and by its symmetry the reverse density is the same.
-            PathVertex &v = start_vertex(path[count++]);
-            v.type = PathVertexType::Medium;
-            v.jumps = prev.jumps;
-            v.medium = medium;
-            v.si.wo = -normalize(ray.d);
-            v.si.p = ray.o - v.si.wo * segment.t;
-            v.beta = beta;
-            v.pdf_fwd = prev.convert_density(pdf_fwd, v);
-            if (counted() == max_count) break;
-            PhaseSample ps = medium->phase().sample_p(v.si.wo, sampler.get_2d());
-            if (!(ps.p > 0)) break;
-            pdf_fwd = ps.p;
-            prev.pdf_rev = v.convert_density(ps.p, prev);
-            ray = Ray{v.p(), ps.wi, Infinity};
-            continue;
-        }
-        if (!hit) {
+        if (event == WalkEvent::Escaped) {
             if (mode == TransportMode::Radiance && !scene.infinite_lights.empty()) {
                 PathVertex &v = start_vertex(path[count++]);
                 v.type = PathVertexType::Light;
                 v.jumps = prev.jumps;
                 v.at_infinity = true;
-                v.si.p = ray.o + normalize(ray.d);
-                v.beta = beta;
+                v.si.p = walk.ray().o + normalize(walk.ray().d);
+                v.beta = walk.beta;
                 v.pdf_fwd = pdf_fwd; // solid angle, the measure of a vertex at infinity
             }
             break;
         }
-        if (!si.material) {
-            // A medium boundary without a surface: continue straight through.
-            medium = medium_after(si, ray.d, medium);
-            ray = si.spawn_ray(ray.d);
-            continue;
-        }
-        BSDF bsdf = shade(si, ctx.lambda, ctx.sample.scratch);
-        if (!bsdf) {
-            medium = medium_after(si, ray.d, medium);
-            ray = si.spawn_ray(ray.d);
+        const ScatteringPoint &point = walk.vertex();
+        if (!point.in_medium() && !point.bsdf) {
+            walk.pass_through();
             continue;
         }
         PathVertex &v = start_vertex(path[count++]);
-        v.type = PathVertexType::Surface;
         v.jumps = prev.jumps;
-        v.si = si;
-        v.bsdf = bsdf;
-        v.medium = medium;
-        v.beta = beta;
+        v.medium = walk.medium();
+        v.beta = walk.beta;
+        if (point.in_medium()) {
+            v.type = PathVertexType::Medium;
+            v.si.p = point.p;
+            v.si.wo = point.wo;
+        } else {
+            v.type = PathVertexType::Surface;
+            v.si = walk.hit();
+            v.bsdf = point.bsdf;
+        }
         v.pdf_fwd = prev.convert_density(pdf_fwd, v);
         // The last counted vertex still enters a profile solid if its sample says so: the exit
         // is part of the same scattering event.
         const bool last = counted() == max_count;
-        if (last && !si.material->has_profile_subsurface()) break;
-
-        float u = sampler.get_1d();
-        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), mode);
-        if (!bs) break;
-        if (const DisneyMaterial *profile = profile_entry(si, *bs)) {
-            if (!jump_through_profile(ctx, *profile, *bs, mode, last, path, count, beta, pdf_fwd, ray, medium) || last)
-                break;
+        if (last && (point.in_medium() || !walk.hit().material->has_profile_subsurface())) break;
+        const std::optional<WalkScatter> s = walk.scatter();
+        if (!s) break;
+        if (s->profile) {
+            // The predecessor's reverse density becomes the exit lobe's here (a walk from the
+            // other end would leave the solid at this point); the reverse jump's is 1.
+            const float exit_pdf_here = profile_exit_density(*s->profile, v.si, ctx.sample.scratch);
+            path[count - 2].pdf_rev = v.convert_density(exit_pdf_here, path[count - 2]);
+            v.pdf_rev = 1;
+            const uint16_t jumps = v.jumps + 1;
+            if (!walk.jump(*s->profile)) break;
+            PathVertex &exit = start_vertex(path[count++]);
+            exit.type = PathVertexType::Surface;
+            exit.after_jump = true;
+            exit.jumps = jumps;
+            exit.si = walk.hit();
+            exit.bsdf = walk.vertex().bsdf;
+            exit.medium = walk.medium();
+            exit.beta = walk.beta;
+            exit.pdf_fwd = 1; // the jump
+            if (last) break;
+            // The exit lobe's direction; the entry's reverse density stays the jump's.
+            const std::optional<WalkScatter> next = walk.scatter();
+            if (!next || walk.beta.is_black()) break;
+            pdf_fwd = next->pdf_fwd;
             continue;
         }
         if (last) break;
-        // Hero-wavelength sampling (Wilkie et al. 2014): a wavelength-dependent direction is
-        // valid for the hero alone. The sample's other contributions lose their secondary
-        // lanes when they are made (see trace_sample).
-        if (bs->dispersive && !ctx.lambda.secondary_terminated()) ctx.lambda.terminate_secondary();
-        pdf_fwd = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, mode) : bs->pdf;
-        beta *= bs->f * (subpath_cosine(mode, si, si.wo, bs->wi) / bs->pdf);
-        // Density of the reverse step, from wi back to wo, with the adjoint transport mode.
-        const TransportMode reverse = mode == TransportMode::Radiance ? TransportMode::Importance
-                                                                      : TransportMode::Radiance;
-        float pdf_rev = bsdf.pdf(bs->wi, si.wo, reverse);
-        if (bs->is_specular()) {
+        pdf_fwd = s->pdf_fwd;
+        float pdf_rev = s->pdf_rev;
+        if (s->specular) {
             v.delta = true;
             pdf_rev = pdf_fwd = 0;
         }
-        if (bs->is_transmission() && si.material->has_interior_absorption())
-            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
         path[count - 2].pdf_rev = v.convert_density(pdf_rev, path[count - 2]);
-        medium = medium_after(si, bs->wi, medium);
-        ray = si.spawn_ray(bs->wi);
-        if (beta.is_black()) break;
+        if (walk.beta.is_black()) break;
     }
     return count;
 }
@@ -215,13 +148,10 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
 // The light subpath: a light chosen by power, an emitted ray, then scattering vertices.
 int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     const Scene &scene = ctx.scene;
-    Sampler &sampler = ctx.sample.sampler;
-    auto chosen = scene.light_sampler->sample(sampler.get_1d());
-    Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
-    if (!chosen || max_count == 0) return 0;
-    const Light &light = *chosen->light;
-    auto les = light.sample_le(u_position, u_direction, ctx.lambda);
-    if (!les || les->L.is_black() || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return 0;
+    const std::optional<LightPathStart> start = start_light_path(scene, ctx.sample.sampler, ctx.lambda);
+    if (!start || max_count == 0) return 0;
+    const Light &light = *start->light;
+    const LightLeSample *les = &start->les;
 
     PathVertex &origin = start_vertex(path[0]);
     origin.type = PathVertexType::Light;
@@ -231,12 +161,11 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     origin.si.n = origin.si.shading.n = les->n;
     // Light paths start in the light's medium (for an area light, that on its shape's outside).
     origin.medium = light.medium();
-    origin.beta = les->L / (chosen->pmf * les->pdf_pos);
-    origin.pdf_fwd = chosen->pmf * les->pdf_pos;
+    origin.beta = les->L / (start->pmf * les->pdf_pos);
+    origin.pdf_fwd = start->pmf * les->pdf_pos;
 
     const Vec3f d = normalize(les->ray.d);
-    const float cos_origin = origin.on_surface() ? abs_dot(les->n, d) : 1.f;
-    int count = random_walk(ctx, les->ray, origin.beta * (cos_origin / les->pdf_dir), les->pdf_dir,
+    int count = random_walk(ctx, les->ray, origin.beta * (start->cos_origin / les->pdf_dir), les->pdf_dir,
                             TransportMode::Importance, origin.medium, path, 1, max_count);
     if (origin.at_infinity) {
         // Rays from infinity start on a disk across the scene: the first vertex's area density

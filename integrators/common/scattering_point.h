@@ -1,4 +1,4 @@
-// Where a VCM subpath scatters: a surface point with its BSDF, or a point inside a participating
+// Where a subpath scatters: a surface point with its BSDF, or a point inside a participating
 // medium with the medium's phase function. A medium point has no normal, so every cosine at it
 // is 1, and the phase function is symmetric, so radiance and importance transport see the same
 // function there (no 1/eta^2, no shading-normal correction). Camera and light vertices are both
@@ -8,6 +8,7 @@
 #include "integrators/common/path_vertex.h"
 #include "materials/bsdf.h"
 #include "media/medium.h"
+#include "media/medium_interface.h"
 
 namespace caustica {
 
@@ -20,6 +21,18 @@ struct ScatteringPoint {
     // Surface points: the media on the side ng points to and on the other (the medium the path
     // arrived in on both, unless the surface is a transition between media).
     const Medium *medium_front = nullptr, *medium_back = nullptr;
+
+    // The surface hit si, with its BSDF, reached by a path travelling in `arrived_in`: the media
+    // on its two sides follow from the hit's medium interface (medium_after).
+    static ScatteringPoint on_surface(const SurfaceInteraction &si, const BSDF &bsdf, const Medium *arrived_in) {
+        return ScatteringPoint{si.p, si.n, si.shading.n, si.wo, bsdf, nullptr, medium_after(si, si.n, arrived_in),
+                               medium_after(si, -si.n, arrived_in)};
+    }
+    // The scattering event at `distance` along ray inside `medium`.
+    static ScatteringPoint in_medium_along(const Ray &ray, float distance, const Medium *medium) {
+        const Vec3f wo = -normalize(ray.d);
+        return ScatteringPoint{ray.o - wo * distance, Vec3f{}, Vec3f{}, wo, BSDF(), medium, medium, medium};
+    }
 
     bool in_medium() const { return medium != nullptr; }
 
@@ -61,9 +74,8 @@ struct ScatteringPoint {
             c.pdf_forward = c.pdf_reverse = medium->phase().pdf(wo, w);
             return c;
         }
-        const TransportMode adjoint = mode == TransportMode::Radiance ? TransportMode::Importance : TransportMode::Radiance;
         c.pdf_forward = bsdf.pdf(wo, w, mode);
-        c.pdf_reverse = bsdf.pdf(w, wo, adjoint);
+        c.pdf_reverse = bsdf.pdf(w, wo, adjoint(mode));
         return c;
     }
 };

@@ -3,11 +3,8 @@
 #include "core/sampling.h"
 #include "geometry/interaction.h"
 #include "integrators/common/light_sampling.h"
-#include "integrators/common/path_segment.h"
-#include "integrators/common/profile_subsurface.h"
+#include "integrators/common/subpath_walk.h"
 #include "integrators/common/tile_renderer.h"
-#include "materials/disney_material.h"
-#include "media/medium_interface.h"
 #include "scene/scene.h"
 
 namespace caustica {
@@ -20,158 +17,73 @@ PathTracer::PathTracer(const ParameterDictionary &params)
 
 namespace {
 
-struct PathState {
-    SampledSpectrum L{0.f}, beta{1.f};
-    // Product of eta^2 over refractions: Russian roulette looks at beta * eta_scale so that the
-    // radiance-mode 1/eta^2 factor does not end paths inside dense glass (pbrt-v4 14.1).
-    float eta_scale = 1;
+// MIS between BSDF sampling and next-event estimation for the emitters the path reaches.
+struct EmissionMIS {
     bool specular_bounce = false;
-    float bsdf_pdf = 0;          // pdf of the last BSDF sample, for MIS on emitters hit
-    LightSampleContext prev_ctx; // where that sample was taken
-    const Material *absorbing_interior = nullptr;
-    const Medium *medium = nullptr; // the participating medium the ray travels through
-    FreeFlightMIS free_flight;
+    float bsdf_pdf = 0;          // density of the direction that reached the emitter
+    LightSampleContext prev_ctx; // where that direction was sampled
 };
 
-// Russian roulette after the first bounces; false when the path ends.
-bool russian_roulette(PathState &st, int depth, Sampler &sampler) {
-    SampledSpectrum rr_beta = st.beta * st.eta_scale;
-    if (rr_beta.max_value() < 1 && depth > 1) {
-        float q = std::max(0.f, 1 - rr_beta.max_value());
-        if (sampler.get_1d() < q) return false;
-        st.beta /= 1 - q;
-    }
-    return !st.beta.is_black();
-}
-
-// The rest of a profile BSSRDF event after its entry at `entry` (profile_subsurface.h): the
-// exit point, whose weight R(r) / pdf carries the albedo, then the exit lobe there, with
-// next-event estimation and a sampled direction, as at any diffuse surface. False when the path
-// ends.
-bool leave_through_profile(const Scene &scene, const DisneyMaterial &material, const SurfaceInteraction &entry,
-                           PathState &st, Ray &ray, SampledWavelengths &lambda, Sampler &sampler,
-                           ScratchBuffer &scratch, uint64_t &rays) {
-    std::optional<ProfileExit> exit = sample_profile_exit(scene, material, entry, lambda, sampler, scratch, rays);
-    if (!exit) return false;
-    st.beta *= exit->weight;
-    if (st.beta.is_black()) return false;
-
-    const SurfaceInteraction &si = exit->si;
-    const BSDF &bsdf = exit->bsdf;
-    const LightSampleContext ctx{si.p, si.n, si.shading.n};
-    st.L += st.beta * sample_direct_lighting(scene, si, bsdf, ctx, lambda, sampler, rays, TransportMode::Radiance,
-                                             DirectLighting::WeightedAgainstBsdfSampling, st.medium);
-    auto bs = bsdf.sample_f(si.wo, 0, sampler.get_2d(), TransportMode::Radiance);
-    if (!bs) return false;
-    st.beta *= bs->f * abs_dot(bs->wi, si.shading.n) / bs->pdf;
-    st.bsdf_pdf = bs->pdf;
-    st.specular_bounce = false;
-    st.prev_ctx = ctx;
-    st.medium = medium_after(si, bs->wi, st.medium);
-    ray = si.spawn_ray(bs->wi);
-    return true;
-}
-
-SampledSpectrum trace_path(const Scene &scene, int max_depth, Ray ray, SampledWavelengths &lambda,
+// Radiance along a camera ray: next-event estimation at every non-specular vertex (surface or
+// medium), weighted against the walk's own hits on emitters by the power heuristic.
+SampledSpectrum trace_path(const Scene &scene, int max_depth, const Ray &camera_ray, SampledWavelengths &lambda,
                            Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
-    PathState st;
-    st.medium = scene.camera_medium;
+    SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, scratch, rays, false);
+    walk.start(camera_ray, scene.camera_medium, SampledSpectrum(1.f));
+    SampledSpectrum L(0.f);
+    EmissionMIS mis;
     int depth = 0;
+    // Emission reached by the walk, weighted against light sampling from the vertex before.
+    auto add_emission = [&](const Light &light, const SampledSpectrum &Le, Vec3f wi) {
+        if (Le.is_black()) return;
+        float w = 1;
+        if (depth > 0 && !mis.specular_bounce)
+            w = power_heuristic(1, mis.bsdf_pdf, 1, light_pdf(scene, light, mis.prev_ctx, wi));
+        L += walk.beta * Le * w;
+    };
     while (true) {
-        SurfaceInteraction si;
-        ++rays;
-        bool hit = scene.intersect(ray, &si);
-
-        PathSegment segment = traverse_segment(st.medium, st.absorbing_interior,
-                                               hit ? si.t * length(ray.d) : Infinity, lambda, sampler, st.free_flight);
-        st.beta *= segment.weight;
-        if (st.beta.is_black()) break;
-        if (segment.scattered) {
-            // A scattering event in the medium: light sampling and phase-function sampling,
-            // combined by MIS as at a surface.
-            if (depth++ == max_depth) break;
-            const Vec3f wo = -normalize(ray.d), p = ray.o - wo * segment.t;
-            st.L += st.beta * sample_direct_lighting_in_medium(scene, p, wo, *st.medium, lambda, sampler, rays);
-            PhaseSample ps = st.medium->phase().sample_p(wo, sampler.get_2d());
-            st.bsdf_pdf = ps.p;
-            st.specular_bounce = false;
-            st.prev_ctx = LightSampleContext{p, {}, {}};
-            ray = Ray{p, ps.wi, Infinity};
-            if (!russian_roulette(st, depth, sampler)) break;
-            continue;
-        }
-
-        if (!hit) {
-            for (const Light *light : scene.infinite_lights) {
-                SampledSpectrum Le = light->Le(ray, lambda);
-                if (Le.is_black()) continue;
-                float w = 1;
-                if (depth > 0 && !st.specular_bounce)
-                    w = power_heuristic(1, st.bsdf_pdf, 1, light_pdf(scene, *light, st.prev_ctx, ray.d));
-                st.L += st.beta * Le * w;
-            }
+        const WalkEvent event = walk.advance();
+        if (event == WalkEvent::Ended) break;
+        if (event == WalkEvent::Escaped) {
+            for (const Light *light : scene.infinite_lights) add_emission(*light, light->Le(walk.ray(), lambda), walk.ray().d);
             break;
         }
-
-        if (si.area_light) {
-            SampledSpectrum Le = si.area_light->L(si.p, si.n, si.uv, si.wo, lambda);
-            if (!Le.is_black()) {
-                float w = 1;
-                if (depth > 0 && !st.specular_bounce)
-                    w = power_heuristic(1, st.bsdf_pdf, 1, light_pdf(scene, *si.area_light, st.prev_ctx, ray.d));
-                st.L += st.beta * Le * w;
+        const ScatteringPoint &point = walk.vertex();
+        if (!point.in_medium()) {
+            const SurfaceInteraction &si = walk.hit();
+            if (si.area_light) add_emission(*si.area_light, si.area_light->L(si.p, si.n, si.uv, si.wo, lambda), walk.ray().d);
+            if (!point.bsdf) {
+                walk.pass_through();
+                continue;
             }
         }
-
-        if (!si.material) {
-            // A medium boundary without a surface: continue straight through.
-            st.medium = medium_after(si, ray.d, st.medium);
-            ray = si.spawn_ray(ray.d);
-            continue;
-        }
         if (depth++ == max_depth) break;
-
-        BSDF bsdf = shade(si, lambda, scratch);
-        if (!bsdf) {
-            st.medium = medium_after(si, ray.d, st.medium);
-            ray = si.spawn_ray(ray.d);
-            continue;
+        // Next-event estimation at this vertex, and again at the exit of a profile solid that
+        // the sampled direction enters (one scattering event, as for maxdepth).
+        while (true) {
+            if (point.in_medium()) {
+                L += walk.beta * sample_direct_lighting_in_medium(scene, point.p, point.wo, *point.medium, lambda,
+                                                                 sampler, rays);
+                mis.prev_ctx = LightSampleContext{point.p, {}, {}};
+            } else {
+                const SurfaceInteraction &si = walk.hit();
+                mis.prev_ctx = LightSampleContext{si.p, si.n, si.shading.n};
+                if (is_non_specular(point.bsdf.flags()))
+                    L += walk.beta * sample_direct_lighting(scene, si, point.bsdf, mis.prev_ctx, lambda, sampler, rays,
+                                                            TransportMode::Radiance,
+                                                            DirectLighting::WeightedAgainstBsdfSampling,
+                                                            walk.medium());
+            }
+            const std::optional<WalkScatter> s = walk.scatter();
+            if (!s) return L;
+            mis.bsdf_pdf = s->pdf_fwd;
+            mis.specular_bounce = s->specular;
+            if (!s->profile) break;
+            if (!walk.jump(*s->profile)) return L;
         }
-        const Vec3f wo = si.wo;
-        const LightSampleContext ctx{si.p, si.n, si.shading.n};
-
-        if (is_non_specular(bsdf.flags()))
-            st.L += st.beta * sample_direct_lighting(scene, si, bsdf, ctx, lambda, sampler, rays,
-                                                     TransportMode::Radiance,
-                                                     DirectLighting::WeightedAgainstBsdfSampling, st.medium);
-
-        float u = sampler.get_1d();
-        auto bs = bsdf.sample_f(wo, u, sampler.get_2d(), TransportMode::Radiance);
-        if (!bs) break;
-        if (const DisneyMaterial *profile_material = profile_entry(si, *bs)) {
-            st.beta *= bs->f * abs_dot(bs->wi, si.shading.n) / bs->pdf;
-            if (!leave_through_profile(scene, *profile_material, si, st, ray, lambda, sampler, scratch, rays)) break;
-            if (!russian_roulette(st, depth, sampler)) break;
-            continue;
-        }
-        if (bs->dispersive && !lambda.secondary_terminated()) {
-            lambda.terminate_secondary();
-            for (int i = 1; i < NumWavelengths; ++i) st.beta[i] = 0;
-        }
-        st.beta *= bs->f * abs_dot(bs->wi, si.shading.n) / bs->pdf;
-        st.bsdf_pdf = bs->pdf_is_proportional ? bsdf.pdf(wo, bs->wi) : bs->pdf;
-        st.specular_bounce = bs->is_specular();
-        st.prev_ctx = ctx;
-        if (bs->is_transmission()) {
-            st.eta_scale *= sqr(bs->eta);
-            if (si.material->has_interior_absorption())
-                st.absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-        }
-        st.medium = medium_after(si, bs->wi, st.medium);
-        ray = si.spawn_ray(bs->wi);
-        if (!russian_roulette(st, depth, sampler)) break;
+        if (!walk.russian_roulette(depth)) break;
     }
-    return st.L;
+    return L;
 }
 
 } // namespace

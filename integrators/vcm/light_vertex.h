@@ -16,7 +16,7 @@
 
 #include "core/octahedral.h"
 #include "integrators/common/photon_side.h"
-#include "integrators/vcm/scattering_point.h"
+#include "integrators/common/scattering_point.h"
 #include "spectral/sampled_spectrum.h"
 
 #include <array>

@@ -4,11 +4,12 @@
 #include "core/error.h"
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/merge_radius.h"
-#include "integrators/common/path_segment.h"
+#include "integrators/common/light_path_start.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/photon_search_parameter.h"
 #include "integrators/common/profile_subsurface.h"
 #include "integrators/common/splat_scale.h"
+#include "integrators/common/subpath_walk.h"
 #include "integrators/common/transmittance.h"
 #include "integrators/vcm/light_vertex.h"
 #include "integrators/vcm/vcm_mis.h"
@@ -52,6 +53,11 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
                          std::string(name) + " needs a camera whose importance is modelled (perspective); "
                                              "this scene's camera has none");
     if (base_radius_ == 0) base_radius_ = default_merge_radius(scene);
+    // Advice only: vcm always merges, so that it renders the same image as every other
+    // integrator whatever the analysis concludes.
+    if (mode == Mode::VertexConnectionMerging && !scene.features.caustic_paths)
+        note("vcm: the scene analysis finds no surface that focuses light, so merging adds little "
+             "that connections do not already render; bdpt may converge faster here");
     params.report_unused();
 }
 
@@ -65,7 +71,7 @@ constexpr int kLightPathDimension = 1 << 12;
 struct Iteration {
     const Scene &scene;
     int max_depth;
-    bool use_vc, use_vm;
+    bool use_vc;
     float radius;
     const WavelengthGroups &groups;
     std::vector<VcmWeights> weights;       // per wavelength group
@@ -103,18 +109,6 @@ void add_photons(std::span<const LightVertex> path, VcmPhotonMap &surface_photon
     }
 }
 
-// The point where a segment of a subpath ends: a surface hit (si, its BSDF, and the media on its
-// two sides given the medium the path arrived in), or the scattering event inside `medium`.
-ScatteringPoint surface_point(const SurfaceInteraction &si, const BSDF &bsdf, const Medium *arrived_in) {
-    return ScatteringPoint{si.p, si.n, si.shading.n, si.wo, bsdf, nullptr, medium_after(si, si.n, arrived_in),
-                           medium_after(si, -si.n, arrived_in)};
-}
-
-ScatteringPoint medium_point(const Ray &ray, float distance, const Medium *medium) {
-    const Vec3f wo = -normalize(ray.d);
-    return ScatteringPoint{ray.o - wo * distance, Vec3f{}, Vec3f{}, wo, BSDF(), medium, medium, medium};
-}
-
 // A ray leaving point towards p_to (with normal n_to, zero if none) and stopping short of it.
 Ray spawn_ray_between(const ScatteringPoint &point, Vec3f p_to, Vec3f n_to) {
     return spawn_ray_to(point.p, point.ng, p_to, n_to);
@@ -129,14 +123,6 @@ SampledSpectrum in_group_measure(SampledSpectrum L, bool terminated, float hero_
     SampledSpectrum hero(0.f);
     hero[0] = L[0] * hero_scale;
     return hero;
-}
-
-void drop_secondary(SampledSpectrum &s) {
-    for (int i = 1; i < NumWavelengths; ++i) s[i] = 0;
-}
-
-bool is_at_infinity(const Light &light) {
-    return light.type() == LightType::Infinite || light.type() == LightType::DeltaDirection;
 }
 
 // Emission densities of a light towards a direction, with the delta parts of delta lights set to
@@ -200,166 +186,82 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
     scene.film->add_splat(cs->p_raster, L * T, lambda);
 }
 
-// The rest of a profile BSSRDF event that the light subpath's BSDF sample bs at `entry` began
-// (vcm_mis.h): the exit, appended as a vertex after a jump and joined to the lens like any
-// other, then, unless the path is at max_depth, a direction from its exit lobe (ray, from
-// exit_point). False when the subpath ends.
-bool jump_through_profile(const LightPathContext &ctx, const DisneyMaterial &material, const SurfaceInteraction &entry,
-                          const BSDFSample &bs, int path_length, const SampledWavelengths &lambda,
-                          const SampledSpectrum &flux, SampledSpectrum &beta, SubpathMis &m, const Medium *&medium,
-                          std::vector<LightVertex> &store, Ray &ray, Vec3f &exit_point) {
-    Sampler &sampler = ctx.pixel.sampler;
-    beta *= bs.f * (importance_cosine(entry, entry.wo, bs.wi) / bs.pdf);
-    m.jump(ctx.w, ctx.w.surface, profile_exit_density(material, entry, ctx.pixel.sample_scratch));
-    std::optional<ProfileExit> exit =
-        sample_profile_exit(ctx.it.scene, material, entry, lambda, sampler, ctx.bsdf_memory, ctx.pixel.rays);
-    if (!exit) return false;
-    beta *= exit->weight;
-    if (beta.is_black()) return false;
-    const SurfaceInteraction &si = exit->si;
-    const LightVertex v{surface_point(si, exit->bsdf, medium), flux * beta, m.d_vcm, m.d_vc, m.d_vm,
-                        uint16_t(path_length), lambda.secondary_terminated(), true};
-    store.push_back(v);
-    if (ctx.it.use_vc) {
-        const Vec2f u_lens = sampler.get_2d();
-        if (ctx.connect_to_lens) connect_to_camera(ctx, v, m, lambda, u_lens);
-    }
-    if (path_length >= ctx.it.max_depth) return false;
-    auto next = exit->bsdf.sample_f(si.wo, 0, sampler.get_2d(), TransportMode::Importance);
-    if (!next) return false;
-    m.scatter(ctx.w, NoMerge, abs_dot(si.n, next->wi), next->pdf, 1.f, false);
-    beta *= next->f * (importance_cosine(si, si.wo, next->wi) / next->pdf);
-    medium = medium_after(si, next->wi, medium);
-    ray = si.spawn_ray(next->wi);
-    exit_point = si.p;
-    return true;
-}
-
 // Traces the light subpath of one pixel with its group's wavelengths, appending its
 // non-specular vertices to `store` and splatting their connections to the lens.
 void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, std::vector<LightVertex> &store) {
     const Iteration &it = ctx.it;
     const Scene &scene = it.scene;
     Sampler &sampler = ctx.pixel.sampler;
-    auto chosen = scene.light_sampler->sample(sampler.get_1d());
-    Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
-    if (!chosen) return;
-    const Light &light = *chosen->light;
-    auto les = light.sample_le(u_position, u_direction, lambda);
-    if (!les || les->L.is_black() || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return;
+    const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda);
+    if (!start) return;
+    const Light &light = *start->light;
+    const LightLeSample &les = start->les;
 
     // Initial MIS quantities (tech. report eqs. 31-33): the emission density of the light
     // sample against the density with which next-event estimation would pick the same point
     // (taken, as in SmallVCM and pbrt-v4's BDPT, as the light's position density; for lights
     // at infinity, the direction density).
-    const bool at_infinity = is_at_infinity(light);
-    const float cos_light = les->n == Vec3f{} ? 1.f : abs_dot(les->n, normalize(les->ray.d));
-    const float emission_pdf = chosen->pmf * les->pdf_pos * les->pdf_dir;
-    const float direct_pdf = chosen->pmf * (at_infinity ? les->pdf_dir : les->pdf_pos);
+    const bool at_infinity = start->at_infinity();
+    const float emission_pdf = start->pmf * les.pdf_pos * les.pdf_dir;
+    const float direct_pdf = start->pmf * (at_infinity ? les.pdf_dir : les.pdf_pos);
     SubpathMis m;
     m.d_vcm = mis(direct_pdf / emission_pdf);
     // A camera path can only hit lights that are not deltas.
-    m.d_vc = is_delta_light(light.type()) ? 0.f : mis((at_infinity ? 1.f : cos_light) / emission_pdf);
+    m.d_vc = is_delta_light(light.type()) ? 0.f : mis((at_infinity ? 1.f : start->cos_origin) / emission_pdf);
     m.d_vm = m.d_vc * ctx.w.light_hit_weight;
 
-    // The emitted flux is kept apart from the scattering throughput so that Russian roulette
-    // sees the throughput on the path tracer's scale.
-    const SampledSpectrum flux = les->L * (cos_light / emission_pdf);
-    SampledSpectrum beta(1.f);
-    Ray ray = les->ray;
-    Vec3f segment_start = ray.o;
-    // The path leaves the light into the medium around it (for an area light, the medium outside
-    // its shape, the side it emits to).
-    const Medium *medium = light.medium();
-    const Material *absorbing_interior = nullptr;
-    FreeFlightMIS free_flight;
+    // The emitted flux is kept apart from the walk's throughput so that Russian roulette sees
+    // the throughput on the path tracer's scale. The path leaves the light into the medium
+    // around it (for an area light, the medium outside its shape, the side it emits to).
+    SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.bsdf_memory, ctx.pixel.rays, true);
+    walk.start(les.ray, light.medium(), SampledSpectrum(1.f));
     int path_length = 0;
-    while (true) {
-        SurfaceInteraction si;
-        ++ctx.pixel.rays;
-        bool hit = scene.intersect(ray, &si);
-        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler, free_flight);
-        beta *= segment.weight;
-        if (beta.is_black()) break;
-        ScatteringPoint point;
-        if (segment.scattered) {
-            point = medium_point(ray, segment.t, medium);
-        } else {
-            if (!hit) break;
-            BSDF bsdf = si.material ? shade(si, lambda, ctx.bsdf_memory) : BSDF();
-            if (!bsdf) {
-                // A boundary between media only: the segment continues through it.
-                medium = medium_after(si, ray.d, medium);
-                ray = si.spawn_ray(ray.d);
-                continue;
-            }
-            point = surface_point(si, bsdf, medium);
+    while (walk.advance() == WalkEvent::Vertex) {
+        const ScatteringPoint &point = walk.vertex();
+        if (!point.in_medium() && !point.bsdf) {
+            walk.pass_through();
+            continue;
         }
         ++path_length;
-        m.arrive(path_length > 1 || !at_infinity ? length_squared(point.p - segment_start) : 1.f,
-                 point.cosine(point.wo));
-
-        if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
-            LightVertex v{point, flux * beta, m.d_vcm, m.d_vc, m.d_vm, uint16_t(path_length),
-                          lambda.secondary_terminated()};
-            store.push_back(v);
-            if (it.use_vc) {
-                // Drawn whether or not the lens is joined, so that a light path traced again
-                // follows the same random numbers.
-                const Vec2f u_lens = sampler.get_2d();
-                if (ctx.connect_to_lens) connect_to_camera(ctx, v, m, lambda, u_lens);
-            }
-        }
-        // A vertex further along could not be part of a path within max_depth; the exit of a
-        // jump through a profile solid still can be, as it shares the entry's path length.
-        const bool last = path_length >= it.max_depth;
-        const bool may_jump = !point.in_medium() && si.material->has_profile_subsurface();
-        if (last && !may_jump) break;
-        Vec3f leaving_from = point.p;
-
-        if (point.in_medium()) {
-            // The phase function is sampled exactly (f / pdf = 1) and is symmetric.
-            PhaseSample ps = medium->phase().sample_p(point.wo, sampler.get_2d());
-            m.scatter(ctx.w, ctx.w.medium, 1.f, ps.p, ps.p, false);
-            ray = Ray{point.p, ps.wi, Infinity};
-        } else {
-            const BSDF &bsdf = point.bsdf;
-            float u = sampler.get_1d();
-            auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
-            if (!bs) break;
-            const DisneyMaterial *profile = may_jump ? profile_entry(si, *bs) : nullptr;
-            if (profile) {
-                if (!jump_through_profile(ctx, *profile, si, *bs, path_length, lambda, flux, beta, m, medium, store,
-                                          ray, leaving_from))
-                    break;
-            } else {
-                if (last) break;
-                if (bs->dispersive && !lambda.secondary_terminated()) {
-                    lambda.terminate_secondary();
-                    drop_secondary(beta);
+        m.arrive(path_length > 1 || !at_infinity ? walk.distance_squared() : 1.f, point.cosine(point.wo));
+        // The vertex, then the exit of a profile solid that its sampled direction enters.
+        while (true) {
+            if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
+                const LightVertex v{point, start->flux * walk.beta, m.d_vcm, m.d_vc, m.d_vm, uint16_t(path_length),
+                                    lambda.secondary_terminated(), walk.after_jump()};
+                store.push_back(v);
+                if (it.use_vc) {
+                    // Drawn whether or not the lens is joined, so that a light path traced
+                    // again follows the same random numbers.
+                    const Vec2f u_lens = sampler.get_2d();
+                    if (ctx.connect_to_lens) connect_to_camera(ctx, v, m, lambda, u_lens);
                 }
-                const float pdf_dir =
-                    bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi, TransportMode::Importance) : bs->pdf;
-                const float pdf_rev = bsdf.pdf(bs->wi, si.wo, TransportMode::Radiance);
-                m.scatter(ctx.w, ctx.w.surface, abs_dot(si.n, bs->wi), pdf_dir, pdf_rev, bs->is_specular());
-                beta *= bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
-                if (bs->is_transmission() && si.material->has_interior_absorption())
-                    absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-                medium = medium_after(si, bs->wi, medium);
-                ray = si.spawn_ray(bs->wi);
             }
+            // A vertex further along could not be part of a path within max_depth; the exit
+            // of a jump through a profile solid still can be, as it shares the entry's length.
+            const bool last = path_length >= it.max_depth;
+            const bool may_jump = !walk.after_jump() && !point.in_medium() &&
+                                  walk.hit().material->has_profile_subsurface();
+            if (last && !may_jump) return;
+            const std::optional<WalkScatter> s = walk.scatter();
+            if (!s) return;
+            if (walk.after_jump()) {
+                // The exit lobe's direction; the reverse density at the exit is the jump's, 1.
+                m.scatter(ctx.w, NoMerge, s->cos_out, s->pdf_fwd, 1.f, false);
+                break;
+            }
+            if (s->profile) {
+                m.jump(ctx.w, ctx.w.surface, profile_exit_density(*s->profile, walk.hit(), ctx.pixel.sample_scratch));
+                if (!walk.jump(*s->profile)) return;
+                continue;
+            }
+            if (last) return;
+            m.scatter(ctx.w, ctx.w.at(point.in_medium()), s->cos_out, s->pdf_fwd, s->pdf_rev, s->specular);
+            break;
         }
-        segment_start = leaving_from;
-
         // Russian roulette changes the throughput, not the densities: the MIS weights are
         // unaffected and remain a partition of unity.
-        if (beta.max_value() < 1 && path_length > 1) {
-            float q = std::max(0.f, 1 - beta.max_value());
-            if (sampler.get_1d() < q) break;
-            beta /= 1 - q;
-        }
-        if (beta.is_black()) break;
+        if (!walk.russian_roulette(path_length)) break;
     }
 }
 
@@ -545,39 +447,8 @@ SampledSpectrum complete_at(const CameraPathContext &ctx, const CameraVertex &z)
             L += connect(ctx, z, v);
         }
     }
-    if (ctx.it.use_vm) L += z.point.in_medium() ? merge_in_medium(ctx, z) : merge_on_surface(ctx, z);
+    L += z.point.in_medium() ? merge_in_medium(ctx, z) : merge_on_surface(ctx, z);
     return L;
-}
-
-// The rest of a profile BSSRDF event that the camera subpath's BSDF sample bs at `entry` began
-// (vcm_mis.h): the exit, a camera vertex after a jump that is completed like any other, then a
-// direction from its exit lobe (ray, from exit_point; previous is where it was sampled). False
-// when the subpath ends.
-bool jump_through_profile(const CameraPathContext &ctx, const DisneyMaterial &material,
-                          const SurfaceInteraction &entry, const BSDFSample &bs, int path_length, SubpathMis &m,
-                          SampledSpectrum &beta, SampledSpectrum &L, const Medium *&medium, Ray &ray,
-                          Vec3f &exit_point, LightSampleContext &previous) {
-    Sampler &sampler = ctx.pixel.sampler;
-    ScratchBuffer &scratch = ctx.pixel.sample_scratch;
-    beta *= bs.f * (abs_dot(bs.wi, entry.shading.n) / bs.pdf);
-    m.jump(ctx.w, NoMerge, profile_exit_density(material, entry, scratch));
-    std::optional<ProfileExit> exit =
-        sample_profile_exit(ctx.it.scene, material, entry, ctx.lambda, sampler, scratch, ctx.pixel.rays);
-    if (!exit) return false;
-    beta *= exit->weight;
-    if (beta.is_black()) return false;
-    const SurfaceInteraction &si = exit->si;
-    const ScatteringPoint point = surface_point(si, exit->bsdf, medium);
-    L += beta * complete_at(ctx, CameraVertex{point, m, path_length, true});
-    auto next = exit->bsdf.sample_f(si.wo, 0, sampler.get_2d(), TransportMode::Radiance);
-    if (!next) return false;
-    m.scatter(ctx.w, ctx.w.surface, abs_dot(si.n, next->wi), next->pdf, 1.f, false);
-    beta *= next->f * (abs_dot(next->wi, si.shading.n) / next->pdf);
-    previous = LightSampleContext{si.p, si.n, si.shading.n};
-    medium = medium_after(si, next->wi, medium);
-    ray = si.spawn_ray(next->wi);
-    exit_point = si.p;
-    return true;
 }
 
 // Radiance of the camera subpath of one pixel (tech. report section 5), in the measure of its
@@ -601,61 +472,42 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     SubpathMis m;
     m.d_vcm = mis(it.light_paths / (pdf_dir * it.full_frame_pixels));
 
-    SampledSpectrum L(0.f), beta = camera_ray.weight;
-    float eta_scale = 1;
-    Ray ray = camera_ray.ray;
-    Vec3f segment_start = ray.o;
-    LightSampleContext previous{ray.o, Vec3f{}, Vec3f{}};
-    const Medium *medium = scene.camera_medium;
-    const Material *absorbing_interior = nullptr;
-    FreeFlightMIS free_flight;
+    SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, pixel.sample_scratch, pixel.rays, true);
+    walk.start(camera_ray.ray, scene.camera_medium, camera_ray.weight);
+    SampledSpectrum L(0.f);
+    LightSampleContext previous{camera_ray.ray.o, Vec3f{}, Vec3f{}};
     int path_length = 0;
     auto add = [&](const SampledSpectrum &contribution) {
-        L += beta * in_group_measure(contribution, lambda.secondary_terminated(), ctx.hero_scale);
+        L += walk.beta * in_group_measure(contribution, lambda.secondary_terminated(), ctx.hero_scale);
     };
     while (true) {
-        SurfaceInteraction si;
-        ++pixel.rays;
-        bool hit = scene.intersect(ray, &si);
-        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler, free_flight);
-        beta *= segment.weight;
-        if (beta.is_black()) break;
-        if (!segment.scattered && !hit) {
+        const WalkEvent event = walk.advance();
+        if (event == WalkEvent::Ended) break;
+        if (event == WalkEvent::Escaped) {
             // Environment light: the camera path's own strategy, against next-event estimation
             // of the same direction and the light subpaths that start from it.
             for (const Light *light : scene.infinite_lights) {
-                SampledSpectrum Le = light->Le(ray, lambda);
+                SampledSpectrum Le = light->Le(walk.ray(), lambda);
                 if (Le.is_black()) continue;
                 if (path_length == 0) {
                     add(Le);
                     continue;
                 }
-                const Vec3f wi = normalize(ray.d);
+                const Vec3f wi = normalize(walk.ray().d);
                 const float pmf = scene.light_sampler->pmf(light);
-                EmissionDensities e = emission_densities(*light, segment_start, Vec3f{}, -wi);
+                EmissionDensities e = emission_densities(*light, walk.origin(), Vec3f{}, -wi);
                 const float direct_pdf = pmf * light->pdf_li(previous, wi);
                 const float w_camera = w.vc_enabled * mis(direct_pdf) * m.d_vcm + mis(pmf * e.pdf_pos * e.pdf_dir) * m.d_vc;
                 add(Le / (1 + w_camera));
             }
             break;
         }
-        ScatteringPoint point;
-        if (segment.scattered) {
-            point = medium_point(ray, segment.t, medium);
-        } else {
-            BSDF bsdf = si.material ? shade(si, lambda, pixel.sample_scratch) : BSDF();
-            if (!bsdf && !si.area_light) {
-                medium = medium_after(si, ray.d, medium);
-                ray = si.spawn_ray(ray.d);
-                continue;
-            }
-            point = surface_point(si, bsdf, medium);
-        }
+        const ScatteringPoint &point = walk.vertex();
         ++path_length;
-        m.arrive(length_squared(point.p - segment_start), point.cosine(point.wo));
+        m.arrive(walk.distance_squared(), point.cosine(point.wo));
 
-        if (!point.in_medium() && si.area_light) {
+        if (!point.in_medium() && walk.hit().area_light) {
+            const SurfaceInteraction &si = walk.hit();
             SampledSpectrum Le = si.area_light->L(si.p, si.n, si.uv, si.wo, lambda);
             if (!Le.is_black()) {
                 if (path_length == 1) {
@@ -669,58 +521,32 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                 }
             }
         }
-        if ((!point.in_medium() && !point.bsdf) || path_length > it.max_depth) break;
-
-        if (point.in_medium() || is_non_specular(point.bsdf.flags()))
-            L += beta * complete_at(ctx, CameraVertex{point, m, path_length});
         // Scattering on from vertex max_depth can still reach an emitter (a path of max_depth
         // scattering events, as the path tracer counts them); the next vertex ends the path.
-        Vec3f leaving_from = point.p;
+        if ((!point.in_medium() && !point.bsdf) || path_length > it.max_depth) break;
 
-        if (point.in_medium()) {
-            // The phase function is sampled exactly (f / pdf = 1) and is symmetric.
-            PhaseSample ps = medium->phase().sample_p(point.wo, sampler.get_2d());
-            m.scatter(w, w.medium, 1.f, ps.p, ps.p, false);
-            previous = LightSampleContext{point.p, Vec3f{}, Vec3f{}};
-            ray = Ray{point.p, ps.wi, Infinity};
-        } else {
-            const BSDF &bsdf = point.bsdf;
-            float u = sampler.get_1d();
-            auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
-            if (!bs) break;
-            if (const DisneyMaterial *profile = profile_entry(si, *bs)) {
-                if (!jump_through_profile(ctx, *profile, si, *bs, path_length, m, beta, L, medium, ray, leaving_from,
-                                          previous))
-                    break;
+        // The vertex, then the exit of a profile solid that its sampled direction enters.
+        while (true) {
+            if (point.in_medium() || is_non_specular(point.bsdf.flags()))
+                L += walk.beta * complete_at(ctx, CameraVertex{point, m, path_length, walk.after_jump()});
+            const std::optional<WalkScatter> s = walk.scatter();
+            if (!s) return L;
+            if (walk.after_jump()) {
+                // The exit lobe's direction; the reverse density at the exit is the jump's, 1.
+                m.scatter(w, w.surface, s->cos_out, s->pdf_fwd, 1.f, false);
+            } else if (s->profile) {
+                m.jump(w, NoMerge, profile_exit_density(*s->profile, walk.hit(), pixel.sample_scratch));
+                if (!walk.jump(*s->profile)) return L;
+                continue;
             } else {
-                if (bs->dispersive && !lambda.secondary_terminated()) {
-                    lambda.terminate_secondary();
-                    drop_secondary(beta);
-                }
-                const float pdf_dir_bsdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
-                const float pdf_rev_bsdf = bsdf.pdf(bs->wi, si.wo, TransportMode::Importance);
-                m.scatter(w, w.surface, abs_dot(si.n, bs->wi), pdf_dir_bsdf, pdf_rev_bsdf, bs->is_specular());
-                beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
-                if (bs->is_transmission()) {
-                    eta_scale *= sqr(bs->eta);
-                    if (si.material->has_interior_absorption())
-                        absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-                }
-                previous = LightSampleContext{si.p, si.n, si.shading.n};
-                medium = medium_after(si, bs->wi, medium);
-                ray = si.spawn_ray(bs->wi);
+                m.scatter(w, w.at(point.in_medium()), s->cos_out, s->pdf_fwd, s->pdf_rev, s->specular);
             }
+            previous = point.in_medium() ? LightSampleContext{point.p, Vec3f{}, Vec3f{}}
+                                         : LightSampleContext{point.p, point.ng, point.ns};
+            break;
         }
-        segment_start = leaving_from;
-
         // Russian roulette on beta * eta^2, as in the path tracer (pbrt-v4 14.1).
-        SampledSpectrum rr_beta = beta * eta_scale;
-        if (rr_beta.max_value() < 1 && path_length > 1) {
-            float q = std::max(0.f, 1 - rr_beta.max_value());
-            if (sampler.get_1d() < q) break;
-            beta /= 1 - q;
-        }
-        if (beta.is_black()) break;
+        if (!walk.russian_roulette(path_length)) break;
     }
     return L;
 }
@@ -733,10 +559,6 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     const size_t pixel_count = renderer.pixel_count();
     const Vec2i full = scene.film->resolution();
     const bool use_vc = mode_ == Mode::VertexConnectionMerging;
-    // Merging is what renders specular-diffuse-specular paths, which connections cannot; where
-    // the scene analysis finds no caustic paths, vcm skips the photon pass (no photon maps, no
-    // range searches) and is bidirectional path tracing on the same stored light vertices.
-    const bool use_vm = !use_vc || scene.features.caustic_paths;
     WavelengthGroups groups(wavelength_groups_, scene.overrides.seed);
 
     // Per wavelength group.
@@ -760,14 +582,14 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     renderer.run([&](int iteration) {
         groups.start_iteration(scene, iteration, pixel_count, pixel_count);
         const float radius = base_radius_ * std::pow(float(iteration + 1), (alpha_ - 1) / 2);
-        Iteration it{scene, max_depth_, use_vc, use_vm, radius, groups, {}, {}, {},
+        Iteration it{scene, max_depth_, use_vc, radius, groups, {}, {}, {},
                      float(pixel_count), float(full.x) * float(full.y)};
         for (int g = 0; g < groups.count(); ++g) {
             const float light_path_count = float(std::max<size_t>(groups.light_path_count(g), 1));
             // The kernels' acceptance regions times the light paths gathered (vcm_mis.h).
             const float eta_vcm = Pi * radius * radius * light_path_count;
             const float eta_volume = 4.f / 3.f * Pi * radius * radius * radius * light_path_count;
-            it.weights.push_back(VcmWeights::make(use_vc, use_vm, eta_vcm, eta_volume));
+            it.weights.push_back(VcmWeights::make(use_vc, true, eta_vcm, eta_volume));
             it.vm_normalization.push_back(1 / eta_vcm);
             it.volume_normalization.push_back(1 / eta_volume);
         }
@@ -790,7 +612,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                              store);
             if (keep_light_vertices)
                 light_paths[index] = StoredPath{&store, uint32_t(begin), uint32_t(store.size() - begin)};
-            if (use_vm) add_photons(std::span(store).subspan(begin), surface_photons[g], medium_photons[g]);
+            add_photons(std::span(store).subspan(begin), surface_photons[g], medium_photons[g]);
             ++traced;
         });
         light_paths_traced_ = traced;
@@ -798,11 +620,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
 
         // The groups' maps are independent, so they are indexed in parallel (one after another,
         // they kept the second thread idle for a tenth of the render).
-        if (use_vm)
-            tbb::parallel_for(0, groups.count(), [&](int g) {
-                surface_photons[g].build(radius);
-                medium_photons[g].build(radius);
-            });
+        tbb::parallel_for(0, groups.count(), [&](int g) {
+            surface_photons[g].build(radius);
+            medium_photons[g].build(radius);
+        });
         uint64_t stored = 0;
         if (keep_light_vertices)
             for (const std::vector<LightVertex> &store : light_vertices) stored += store.size();

@@ -15,6 +15,11 @@ namespace caustica {
 
 enum class TransportMode { Radiance, Importance };
 
+// The mode of the other end's subpath: densities of the reverse direction are its.
+inline TransportMode adjoint(TransportMode mode) {
+    return mode == TransportMode::Radiance ? TransportMode::Importance : TransportMode::Radiance;
+}
+
 enum BxDFFlags : unsigned {
     BxDFUnset = 0,
     BxDFReflection = 1 << 0,

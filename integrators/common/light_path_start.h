@@ -1,0 +1,36 @@
+// How every light subpath begins (lt, bdpt, sppm, bpm, vcm): a light chosen by power, a ray
+// emitted from it (Light::sample_le), and the flux that the ray carries.
+#pragma once
+
+#include "lights/light.h"
+#include "spectral/sampled_spectrum.h"
+
+#include <optional>
+
+namespace caustica {
+
+class Sampler;
+class Scene;
+class SampledWavelengths;
+
+struct LightPathStart {
+    const Light *light = nullptr;
+    float pmf = 0;        // the probability of choosing the light
+    LightLeSample les;    // the emitted ray, its radiance and its position and direction densities
+    // |cos| between the ray and the light's surface normal; 1 for lights without a surface
+    // (point, spot, distant, infinite).
+    float cos_origin = 1;
+    // Le |cos| / (pmf pdf_pos pdf_dir): the flux the ray carries, per light path.
+    SampledSpectrum flux{0.f};
+
+    bool at_infinity() const {
+        return light->type() == LightType::Infinite || light->type() == LightType::DeltaDirection;
+    }
+};
+
+// Draws the light (one sampler dimension) and its ray (two 2D dimensions, drawn even when no
+// light can be chosen, so that the dimensions after it do not depend on the outcome). Empty when
+// nothing is emitted.
+std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda);
+
+} // namespace caustica

@@ -1,0 +1,126 @@
+#include "integrators/common/subpath_walk.h"
+
+#include "integrators/common/profile_subsurface.h"
+#include "materials/material.h"
+#include "media/medium_interface.h"
+#include "sampler/sampler.h"
+#include "scene/scene.h"
+
+namespace caustica {
+
+float scattering_cosine(TransportMode mode, const SurfaceInteraction &si, Vec3f wo, Vec3f wi) {
+    return mode == TransportMode::Radiance ? abs_dot(wi, si.shading.n) : importance_cosine(si, wo, wi);
+}
+
+SubpathWalk::SubpathWalk(const Scene &scene, TransportMode mode, SampledWavelengths &lambda, Sampler &sampler,
+                         ScratchBuffer &bsdf_memory, uint64_t &rays, bool reverse_densities)
+    : scene_(scene), mode_(mode), lambda_(lambda), sampler_(sampler), bsdf_memory_(bsdf_memory), rays_(rays),
+      reverse_densities_(reverse_densities) {}
+
+void SubpathWalk::start(const Ray &ray, const Medium *medium, const SampledSpectrum &throughput) {
+    ray_ = ray;
+    medium_ = medium;
+    beta = throughput;
+    previous_p_ = ray.o;
+}
+
+WalkEvent SubpathWalk::advance() {
+    after_jump_ = false;
+    while (true) {
+        ++rays_;
+        const bool hit = scene_.intersect(ray_, &si_);
+        const PathSegment segment = traverse_segment(medium_, absorbing_interior_,
+                                                     hit ? si_.t * length(ray_.d) : Infinity, lambda_, sampler_,
+                                                     free_flight_);
+        beta *= segment.weight;
+        if (beta.is_black()) return WalkEvent::Ended;
+        if (segment.scattered) {
+            point_ = ScatteringPoint::in_medium_along(ray_, segment.t, medium_);
+            return WalkEvent::Vertex;
+        }
+        if (!hit) return WalkEvent::Escaped;
+        const BSDF bsdf = si_.material ? shade(si_, lambda_, bsdf_memory_) : BSDF();
+        if (bsdf || si_.area_light) {
+            point_ = ScatteringPoint::on_surface(si_, bsdf, medium_);
+            return WalkEvent::Vertex;
+        }
+        pass_through();
+    }
+}
+
+void SubpathWalk::pass_through() { leave(si_, ray_.d); }
+
+void SubpathWalk::leave(const SurfaceInteraction &from, Vec3f wi) {
+    medium_ = medium_after(from, wi, medium_);
+    ray_ = from.spawn_ray(wi);
+}
+
+std::optional<WalkScatter> SubpathWalk::scatter() {
+    WalkScatter s;
+    previous_p_ = point_.p;
+    if (point_.in_medium()) {
+        // The phase function is sampled exactly (value = density, so beta is unchanged) and is
+        // symmetric: the reverse density is the same.
+        const PhaseSample ps = medium_->phase().sample_p(point_.wo, sampler_.get_2d());
+        if (!(ps.p > 0)) return std::nullopt;
+        s.wi = ps.wi;
+        s.pdf_fwd = s.pdf_rev = s.sample_pdf = ps.p;
+        ray_ = Ray{point_.p, ps.wi, Infinity};
+        return s;
+    }
+    const BSDF &bsdf = point_.bsdf;
+    const Vec3f wo = si_.wo;
+    // A jump's exit leaves by its exit lobe, a single lobe: no lobe choice is drawn.
+    const float u = after_jump_ ? 0.f : sampler_.get_1d();
+    const std::optional<BSDFSample> bs = bsdf.sample_f(wo, u, sampler_.get_2d(), mode_);
+    if (!bs) return std::nullopt;
+    // Hero-wavelength sampling (Wilkie et al. 2014): a direction that depends on wavelength is
+    // valid for the hero alone; the other lanes end here, before the densities are evaluated.
+    if (bs->dispersive && !lambda_.secondary_terminated()) {
+        lambda_.terminate_secondary();
+        for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
+    }
+    s.wi = bs->wi;
+    s.sample_pdf = bs->pdf;
+    s.pdf_fwd = bs->pdf_is_proportional ? bsdf.pdf(wo, bs->wi, mode_) : bs->pdf;
+    if (reverse_densities_) s.pdf_rev = bsdf.pdf(bs->wi, wo, adjoint(mode_));
+    s.cos_out = abs_dot(si_.n, bs->wi);
+    s.specular = bs->is_specular();
+    beta *= bs->f * (scattering_cosine(mode_, si_, wo, bs->wi) / bs->pdf);
+    if (!after_jump_) {
+        s.profile = profile_entry(si_, *bs);
+        if (s.profile) return s;
+    }
+    if (bs->is_transmission()) {
+        // Radiance is scaled by 1/eta^2 at a refraction, importance is not (Veach 1997, 5.2).
+        if (mode_ == TransportMode::Radiance) eta_scale *= sqr(bs->eta);
+        if (si_.material->has_interior_absorption())
+            absorbing_interior_ = dot(bs->wi, si_.n) < 0 ? si_.material : nullptr;
+    }
+    leave(si_, bs->wi);
+    return s;
+}
+
+bool SubpathWalk::jump(const DisneyMaterial &profile) {
+    std::optional<ProfileExit> exit = sample_profile_exit(scene_, profile, si_, lambda_, sampler_, bsdf_memory_, rays_);
+    if (!exit) return false;
+    beta *= exit->weight;
+    if (beta.is_black()) return false;
+    // A profile solid has no interior medium: the exit lies in the medium the entry does.
+    si_ = exit->si;
+    point_ = ScatteringPoint::on_surface(si_, exit->bsdf, medium_);
+    after_jump_ = true;
+    return true;
+}
+
+bool SubpathWalk::russian_roulette(int depth) {
+    const SampledSpectrum rr_beta = beta * eta_scale;
+    if (rr_beta.max_value() < 1 && depth > 1) {
+        const float q = std::max(0.f, 1 - rr_beta.max_value());
+        if (sampler_.get_1d() < q) return false;
+        beta /= 1 - q;
+    }
+    return !beta.is_black();
+}
+
+} // namespace caustica

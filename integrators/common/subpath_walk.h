@@ -1,0 +1,145 @@
+// The random walk of one subpath, camera or light, shared by every integrator: SmallVCM's single
+// loop (Davidovic's vertexcm.hxx), with each integrator's strategies layered on it. The walk owns
+// the mechanics of moving a path through the scene:
+//   - tracing, and crossing surfaces that only bound media (shapes without a material, and the
+//     "interface" material);
+//   - free flights through participating media with the spectral MIS over the carried
+//     wavelengths (FreeFlightMIS, path_segment.h), and the medium the path is in, tracked across
+//     every interface (medium_after);
+//   - Beer-Lambert absorption inside absorbing dielectrics;
+//   - sampling the phase function or the BSDF in the subpath's transport mode, with the adjoint
+//     shading-normal correction for importance (Veach 1997, 5.3) and eta^2 bookkeeping for
+//     radiance (pbrt-v4 14.1);
+//   - dispersive termination of the secondary wavelengths (Wilkie et al. 2014; pbrt-v4's
+//     SampledWavelengths::TerminateSecondary);
+//   - the jump through a profile-subsurface solid (profile_subsurface.h);
+//   - Russian roulette.
+// An integrator drives it one vertex at a time:
+//
+//     SubpathWalk walk(scene, mode, lambda, sampler, scratch, rays);
+//     walk.start(ray, medium, beta);
+//     while (walk.advance() == WalkEvent::Vertex) {
+//         ... the integrator's strategies at walk.vertex() ...
+//         std::optional<WalkScatter> s = walk.scatter();
+//         ... its MIS bookkeeping with s's densities; walk.jump() if s->profile ...
+//     }
+//
+// and owns only what it does at each vertex: next-event estimation, connections, merges,
+// photons, its MIS quantities and its path-length rule. Each call draws the sampler dimensions
+// that the integrators drew before they shared the walk, in the same order.
+#pragma once
+
+#include "geometry/interaction.h"
+#include "geometry/ray.h"
+#include "integrators/common/path_segment.h"
+#include "integrators/common/scattering_point.h"
+#include "materials/bsdf.h"
+#include "spectral/sampled_spectrum.h"
+#include "spectral/sampled_wavelengths.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace caustica {
+
+class DisneyMaterial;
+class Material;
+class Medium;
+class Sampler;
+class Scene;
+class ScratchBuffer;
+
+enum class WalkEvent {
+    Vertex,  // the path reached a scattering vertex (a surface or a medium event), or an emitter
+    Escaped, // the ray left the scene (environment lights may be seen along walk.ray())
+    Ended,   // the throughput became zero
+};
+
+// How the path left a vertex.
+struct WalkScatter {
+    Vec3f wi;
+    // Solid-angle densities at the vertex: of sampling wi (the BSDF's density when the sample's
+    // own is only proportional to it), and, when the walk keeps reverse densities, of sampling
+    // the direction the path arrived from, starting from wi, in the adjoint mode. Medium vertices:
+    // the phase function's value, both ways (it is sampled exactly, and symmetric).
+    float pdf_fwd = 0, pdf_rev = 0;
+    float sample_pdf = 0;     // the density the sample's weight was divided by
+    float cos_out = 1;        // |wi . ng|, the area conversion at this end; 1 in a medium
+    bool specular = false;    // a delta lobe: the densities are deltas, equal both ways
+    // The sample enters a profile-subsurface solid: the path has not moved, and the integrator
+    // calls jump() to reach the exit (after its own bookkeeping at the entry).
+    const DisneyMaterial *profile = nullptr;
+};
+
+class SubpathWalk {
+  public:
+    // Radiance: a camera subpath; Importance: a light subpath. reverse_densities: fill
+    // WalkScatter::pdf_rev (bidirectional MIS needs it; a path tracer does not).
+    SubpathWalk(const Scene &scene, TransportMode mode, SampledWavelengths &lambda, Sampler &sampler,
+                ScratchBuffer &bsdf_memory, uint64_t &rays, bool reverse_densities);
+
+    // The path leaves along ray, in medium, carrying beta.
+    void start(const Ray &ray, const Medium *medium, const SampledSpectrum &beta);
+
+    // Follows the ray to the next vertex: a medium scattering event, or a surface that scatters
+    // or emits. Surfaces that do neither are crossed.
+    WalkEvent advance();
+
+    // The vertex reached (after advance() returned Vertex). At a surface, hit() is the
+    // intersection and vertex().bsdf may be null when the surface only emits.
+    const ScatteringPoint &vertex() const { return point_; }
+    const SurfaceInteraction &hit() const { return si_; }
+    bool in_medium() const { return point_.in_medium(); }
+    // Where the current segment began: the previous vertex, or the start.
+    Vec3f origin() const { return previous_p_; }
+    // Squared distance from origin() to this vertex.
+    float distance_squared() const { return length_squared(point_.p - previous_p_); }
+    // This vertex is the exit of a jump through a profile solid (entered at the one before).
+    bool after_jump() const { return after_jump_; }
+
+    // Samples how the path leaves the vertex and moves it onto that ray; empty when the path
+    // ends here (no sample). A vertex after a jump samples its exit lobe.
+    std::optional<WalkScatter> scatter();
+    // Continues through a surface that emits but does not scatter (vertex().bsdf null).
+    void pass_through();
+    // The rest of a profile event that scatter() began: samples the exit and makes it the
+    // vertex (after_jump()); false when the profile finds no exit or the throughput vanishes.
+    bool jump(const DisneyMaterial &profile);
+
+    // Russian roulette once `depth` scattering vertices lie behind (from the second on), on the
+    // throughput with the radiance-mode 1/eta^2 undone (importance has none); false when the path
+    // ends.
+    bool russian_roulette(int depth);
+
+    const Ray &ray() const { return ray_; }
+    const Medium *medium() const { return medium_; }
+    SampledSpectrum beta;
+    // Product of eta^2 over the radiance-mode refractions (1 for importance).
+    float eta_scale = 1;
+
+  private:
+    void leave(const SurfaceInteraction &from, Vec3f wi);
+
+    const Scene &scene_;
+    TransportMode mode_;
+    SampledWavelengths &lambda_;
+    Sampler &sampler_;
+    ScratchBuffer &bsdf_memory_;
+    uint64_t &rays_;
+    bool reverse_densities_;
+
+    Ray ray_;
+    const Medium *medium_ = nullptr;
+    const Material *absorbing_interior_ = nullptr;
+    FreeFlightMIS free_flight_;
+    SurfaceInteraction si_;
+    ScatteringPoint point_;
+    Vec3f previous_p_;
+    bool after_jump_ = false;
+};
+
+// The cosine that goes with a direction wi sampled at si from wo: |wi . ns| for radiance, the
+// adjoint-corrected importance_cosine for importance.
+float scattering_cosine(TransportMode mode, const SurfaceInteraction &si, Vec3f wo, Vec3f wi);
+
+} // namespace caustica
