@@ -67,10 +67,10 @@ int main(int argc, char **argv) {
         ->required()
         ->check(CLI::Range(0.001, 1e7));
     compare_cmd->add_option("--reference", compare.reference_path,
-                            "Reference image (.exr); default: the first integrator's longest run");
+                            "Reference image (.exr); default: none, errors are estimated from two renders per budget");
     compare_cmd->add_option("--out", compare.out_dir, "Output directory (created; files in it are replaced)")
         ->required();
-    compare_cmd->add_option("--seed", compare.seed, "Random seed (the same for every render)");
+    compare_cmd->add_option("--seed", compare.seed, "Random seed S: each budget renders with S and S + 1");
     compare_cmd->add_option("--resolution", compare.resolution, "Image size WxH");
     compare_cmd->add_option("--threads", compare.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 4096));

@@ -35,9 +35,9 @@ struct DiffCommandOptions {
 
 struct CompareCommandOptions {
     std::string scene_path;
-    std::vector<std::string> integrators; // in the order given; the first is the default reference
+    std::vector<std::string> integrators; // in the order given
     double seconds = 0;                   // the longest time budget, T
-    std::string reference_path;           // empty: the first integrator's longest run
+    std::string reference_path;           // empty: errors estimated from two renders per budget
     std::string out_dir;
     uint64_t seed = 0;
     std::string resolution;               // "WxH", empty: the scene's

@@ -1,6 +1,8 @@
 // `caustica compare SCENE --integrators a,b,... --time T --out DIR`: renders one scene with
-// several integrators at doubling time budgets, measures each render's error against a
-// reference and writes images, data files, a convergence plot and an HTML report into DIR.
+// several integrators at doubling time budgets, each budget as two independent renders whose
+// difference estimates the error of their average (two_run_noise.h), or measures it against
+// --reference; checks that the integrators agree within that noise (render_agreement.h); and
+// writes images, data files, a convergence plot and an HTML report into DIR.
 #include "cli/commands.h"
 #include "cli/compare_report.h"
 #include "cli/error_colour_map.h"
@@ -15,6 +17,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <map>
 #include <set>
 
 namespace caustica {
@@ -22,7 +25,8 @@ namespace caustica {
 namespace {
 
 // The budgets are T/16, T/8, T/4, T/2 and T: five points spanning 1.2 decades of time, enough
-// to see a convergence rate, at a total cost of just under 2T per integrator.
+// to see a convergence rate, at a total cost of just under 2T per integrator (each budget is
+// split between its two renders).
 constexpr int kBudgetHalvings = 4;
 
 std::vector<double> time_budgets(double limit) {
@@ -51,17 +55,28 @@ std::string local_date() {
     return buf;
 }
 
-// Every pixel's relative error, sqrt of the mean over channels of (x - r)^2 / (r^2 + 0.01) (the
-// per-pixel form of image_difference's relative MSE), through the error colour map on a log10
-// scale over [kErrorImageLog10Min, kErrorImageLog10Max].
-Image relative_error_image(const Image &image, const Image &reference) {
+// (x - r)^2 per pixel and channel.
+Image squared_difference(const Image &image, const Image &reference) {
     Image out(image.width, image.height);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
+    for (size_t i = 0; i < out.rgb.size(); ++i) {
+        const float d = image.rgb[i] - reference.rgb[i];
+        out.rgb[i] = d * d;
+    }
+    return out;
+}
+
+// Every pixel's relative error, sqrt of the mean over channels of e / (r^2 + 0.01) for a squared
+// error e (the per-pixel form of image_difference's relative MSE, or of its estimate from two
+// renders), through the error colour map on a log10 scale over [kErrorImageLog10Min,
+// kErrorImageLog10Max].
+Image relative_error_image(const Image &squared_error, const Image &reference) {
+    Image out(reference.width, reference.height);
+    for (int y = 0; y < reference.height; ++y)
+        for (int x = 0; x < reference.width; ++x) {
             double squared = 0;
             for (int c = 0; c < 3; ++c) {
-                double v = image.at(x, y, c), r = reference.at(x, y, c);
-                squared += (v - r) * (v - r) / (r * r + 0.01);
+                double r = reference.at(x, y, c);
+                squared += squared_error.at(x, y, c) / (r * r + 0.01);
             }
             double error = std::sqrt(squared / 3);
             double t = error > 0 ? (std::log10(error) - kErrorImageLog10Min) /
@@ -75,12 +90,49 @@ Image relative_error_image(const Image &image, const Image &reference) {
 
 void print_summary(const Comparison &c, const std::string &out_dir) {
     std::printf("reference: %s\n", c.reference_description.c_str());
-    std::printf("%-12s %10s %9s %8s %12s %12s\n", "integrator", "budget(s)", "time(s)", "spp", "rel.MSE", "RMSE");
+    std::printf("%-12s %10s %9s %8s %12s %12s %12s\n", "integrator", "budget(s)", "time(s)", "spp", "rel.MSE", "RMSE",
+                "est.rel.MSE");
     for (const ComparisonRun &r : c.runs)
-        std::printf("%-12s %10g %9.3f %8d %12s %12.4g\n", r.integrator.c_str(), r.budget_seconds, r.seconds,
-                    r.samples_per_pixel,
-                    r.is_reference ? "reference" : format_number("%.4g", r.error.relative_mse).c_str(), r.error.rmse);
+        std::printf("%-12s %10g %9.3f %8d %12.4g %12.4g %12.4g\n", r.integrator.c_str(), r.budget_seconds, r.seconds,
+                    r.samples_per_pixel, r.error.relative_mse, r.error.rmse, r.estimated_error.relative_mse);
+    if (!c.agreements.empty()) std::printf("agreement at the longest budget:\n");
+    for (const Agreement &a : c.agreements) std::printf("  %s\n", agreement_sentence(a).c_str());
+    std::printf("first to reach a relative MSE (log-log interpolation between budgets):\n");
+    for (double level : kRelativeMseLevels) {
+        const std::string first = first_to_reach(c, level);
+        if (first.empty()) {
+            std::printf("  <= %g: none\n", level);
+            continue;
+        }
+        const ReachTime reach = time_to_reach(c, first, level);
+        std::printf("  <= %g: %s at %s%.3g s\n", level, first.c_str(), reach.at_most ? "<= " : "", reach.seconds);
+    }
     std::printf("report: %s\n", (std::filesystem::path(out_dir) / "index.html").string().c_str());
+}
+
+struct HalfRender {
+    Image image;
+    std::map<std::string, std::string> metadata;
+};
+
+// One of a budget's two renders, for `seconds`, written to `path`; its statistics are added to
+// `run`'s.
+HalfRender render_half(const SceneDescription &description, const RenderOverrides &overrides, double seconds,
+                       const std::filesystem::path &path, const std::string &scene_path, ComparisonRun &run) {
+    // A fresh scene per render: the film accumulates. Its warnings were shown before rendering.
+    RenderSession session = create_render_session(description, overrides, {.scene = false, .integrator = false});
+    RenderBudget budget;
+    budget.spp = 0; // time alone decides
+    budget.seconds = seconds;
+    RenderStats stats;
+    session.render(budget, stats, [](double, uint64_t) {});
+    HalfRender half{session.image(stats), render_metadata(*session.scene, stats, overrides.seed, scene_path)};
+    write_exr(path.string(), half.image, half.metadata);
+    run.seconds += stats.seconds;
+    run.samples_per_pixel += stats.samples_per_pixel;
+    run.rays += stats.rays;
+    run.non_finite_samples += stats.non_finite_samples;
+    return half;
 }
 
 } // namespace
@@ -102,6 +154,11 @@ int run_compare(const CompareCommandOptions &options) {
     }
 
     SceneDescription description = parse_scene_file(options.scene_path);
+    // The two renders of a budget must be independent; a Sampler "seed" would give both the same.
+    if (description.sampler.params.has("seed"))
+        throw InputError(description.sampler.params.location("seed"),
+                         "compare renders every budget twice, with seeds S and S + 1, to measure its noise; "
+                         "this \"seed\" would override both (remove it)");
 
     // Everything the user can get wrong is checked before the first render: each integrator is
     // created once (showing the scene's warnings once and each integrator's own), and the
@@ -138,42 +195,6 @@ int run_compare(const CompareCommandOptions &options) {
     comparison.threads = worker_thread_count(options.threads);
     tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, comparison.threads);
 
-    for (const std::string &name : comparison.integrators) {
-        RenderOverrides o = overrides;
-        o.integrator = name;
-        for (double budget_seconds : comparison.budgets) {
-            // A fresh scene per render: the film accumulates. Its warnings were shown above.
-            RenderSession session = create_render_session(description, o, {.scene = false, .integrator = false});
-            RenderBudget budget;
-            budget.spp = 0; // time alone decides
-            budget.seconds = budget_seconds;
-            RenderStats stats;
-            session.render(budget, stats, [](double, uint64_t) {});
-            Image image = session.image(stats);
-
-            ComparisonRun run;
-            run.integrator = name;
-            run.budget_seconds = budget_seconds;
-            run.seconds = stats.seconds;
-            run.samples_per_pixel = stats.samples_per_pixel;
-            run.rays = stats.rays;
-            run.non_finite_samples = stats.non_finite_samples;
-            const std::string stem = image_stem(name, budget_seconds);
-            run.image = stem + ".exr";
-            run.png = stem + ".png";
-            run.error_png = stem + "-error.png";
-            write_exr((out_dir / run.image).string(), image,
-                      render_metadata(*session.scene, stats, options.seed, options.scene_path));
-            write_png((out_dir / run.png).string(), image);
-            std::fprintf(stderr, "compare: %s, %g s budget: %d spp in %.3f s\n", name.c_str(), budget_seconds,
-                         run.samples_per_pixel, run.seconds);
-            comparison.runs.push_back(std::move(run));
-        }
-    }
-
-    // Without --reference the first integrator's longest run is the reference: its own error
-    // reads zero, and that integrator's shorter runs share their first samples with it (same
-    // seed), so their errors are somewhat lower than against an independent reference.
     Image reference;
     if (!options.reference_path.empty()) {
         reference = std::move(given_reference);
@@ -181,19 +202,61 @@ int run_compare(const CompareCommandOptions &options) {
         comparison.reference_png = "images/reference.png";
         write_png((out_dir / comparison.reference_png).string(), reference);
     } else {
-        ComparisonRun &longest = comparison.runs[comparison.budgets.size() - 1];
-        longest.is_reference = true;
-        reference = read_exr((out_dir / longest.image).string());
-        comparison.reference_description = "no --reference given: the longest run of the first integrator, " +
-                                           longest.integrator + " at " + format_number("%g", longest.budget_seconds) +
-                                           " s (" + longest.image + ")";
-        comparison.reference_png = longest.png;
+        comparison.reference_description =
+            "none given: each error is estimated from the difference of the budget's two independent renders";
     }
-    for (ComparisonRun &run : comparison.runs) {
-        Image image = read_exr((out_dir / run.image).string());
-        run.error = image_difference(image, reference);
-        write_png((out_dir / run.error_png).string(), relative_error_image(image, reference));
+
+    // Each integrator's longest budget, for the agreement check.
+    std::vector<TwoRuns> longest;
+    for (const std::string &name : comparison.integrators) {
+        RenderOverrides first_seed = overrides, second_seed = overrides;
+        first_seed.integrator = second_seed.integrator = name;
+        second_seed.seed = overrides.seed + 1;
+        for (double budget_seconds : comparison.budgets) {
+            ComparisonRun run;
+            run.integrator = name;
+            run.budget_seconds = budget_seconds;
+            const std::string stem = image_stem(name, budget_seconds);
+            run.image = stem + ".exr";
+            run.png = stem + ".png";
+            run.error_png = stem + "-error.png";
+            run.render_a = stem + "-a.exr";
+            run.render_b = stem + "-b.exr";
+
+            const double half = budget_seconds / 2;
+            const HalfRender a =
+                render_half(description, first_seed, half, out_dir / run.render_a, options.scene_path, run);
+            const HalfRender b =
+                render_half(description, second_seed, half, out_dir / run.render_b, options.scene_path, run);
+            TwoRuns runs(a.image, b.image);
+            // The average's metadata: the first render's, with both renders' samples.
+            std::map<std::string, std::string> metadata = a.metadata;
+            metadata["caustica:spp"] = std::to_string(run.samples_per_pixel);
+            metadata["caustica:average_of"] = run.render_a + " " + run.render_b;
+            write_exr((out_dir / run.image).string(), runs.mean, metadata);
+            write_png((out_dir / run.png).string(), runs.mean);
+
+            run.estimated_error = estimated_error(runs);
+            if (options.reference_path.empty()) {
+                run.error = run.estimated_error;
+                write_png((out_dir / run.error_png).string(),
+                          relative_error_image(estimated_variance(runs), runs.mean));
+            } else {
+                const ImageDifference d = image_difference(runs.mean, reference);
+                run.error = {d.rmse, d.relative_mse};
+                write_png((out_dir / run.error_png).string(),
+                          relative_error_image(squared_difference(runs.mean, reference), reference));
+            }
+            std::fprintf(stderr, "compare: %s, %g s budget: %d spp in %.3f s (two renders)\n", name.c_str(),
+                         budget_seconds, run.samples_per_pixel, run.seconds);
+            comparison.runs.push_back(std::move(run));
+            if (budget_seconds == comparison.budgets.back()) longest.push_back(std::move(runs));
+        }
     }
+    for (size_t i = 0; i < longest.size(); ++i)
+        for (size_t j = i + 1; j < longest.size(); ++j)
+            comparison.agreements.push_back(check_agreement(comparison.integrators[i], longest[i],
+                                                            comparison.integrators[j], longest[j]));
 
     write_convergence_csv((out_dir / "convergence.csv").string(), comparison);
     write_results_json((out_dir / "results.json").string(), comparison);

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -126,21 +127,46 @@ std::string scene_name(const Comparison &c) { return std::filesystem::path(c.sce
 
 } // namespace
 
-double budget_to_reach(const Comparison &comparison, const std::string &integrator, double level) {
-    for (const ComparisonRun &run : comparison.runs)
-        if (run.integrator == integrator && !run.is_reference && run.error.relative_mse <= level)
-            return run.budget_seconds;
-    return -1;
+ReachTime time_to_reach(const Comparison &comparison, const std::string &integrator, double level) {
+    const ComparisonRun *previous = nullptr;
+    for (const ComparisonRun &run : comparison.runs) {
+        if (run.integrator != integrator) continue;
+        if (run.error.relative_mse <= level) {
+            if (!previous) return {run.seconds, true};
+            const double e0 = previous->error.relative_mse, e1 = run.error.relative_mse;
+            const double t0 = previous->seconds, t1 = run.seconds;
+            // A zero error or time has no logarithm: no interpolation then.
+            if (e1 <= 0 || t0 <= 0 || t1 <= 0) return {t1, false};
+            const double fraction = std::log(level / e0) / std::log(e1 / e0);
+            return {t0 * std::pow(t1 / t0, fraction), false};
+        }
+        previous = &run;
+    }
+    return {};
+}
+
+std::string first_to_reach(const Comparison &comparison, double level) {
+    std::string first;
+    double best = 0;
+    for (const std::string &name : comparison.integrators) {
+        const ReachTime reach = time_to_reach(comparison, name, level);
+        if (reach.seconds >= 0 && (first.empty() || reach.seconds < best)) {
+            first = name;
+            best = reach.seconds;
+        }
+    }
+    return first;
 }
 
 void write_convergence_csv(const std::string &path, const Comparison &c) {
-    std::string csv = "integrator,budget_seconds,seconds,samples_per_pixel,relative_mse,rmse,rays,"
-                      "non_finite_samples,is_reference,image\n";
+    std::string csv = "integrator,budget_seconds,seconds,samples_per_pixel,relative_mse,rmse,"
+                      "estimated_relative_mse,estimated_rmse,rays,non_finite_samples,image,render_a,render_b\n";
     for (const ComparisonRun &r : c.runs)
         csv += r.integrator + "," + exact(r.budget_seconds) + "," + exact(r.seconds) + "," +
                std::to_string(r.samples_per_pixel) + "," + exact(r.error.relative_mse) + "," + exact(r.error.rmse) +
-               "," + std::to_string(r.rays) + "," + std::to_string(r.non_finite_samples) + "," +
-               (r.is_reference ? "true" : "false") + "," + r.image + "\n";
+               "," + exact(r.estimated_error.relative_mse) + "," + exact(r.estimated_error.rmse) + "," +
+               std::to_string(r.rays) + "," + std::to_string(r.non_finite_samples) + "," + r.image + "," +
+               r.render_a + "," + r.render_b + "\n";
     write_text_file(path, csv);
 }
 
@@ -156,9 +182,11 @@ void write_results_json(const std::string &path, const Comparison &c) {
          << "  \"budgets_seconds\": [";
     for (size_t i = 0; i < c.budgets.size(); ++i) json << (i ? ", " : "") << json_number(c.budgets[i]);
     json << "],\n"
-         << "  \"reference\": {\"description\": " << json_string(c.reference_description)
-         << ", \"image\": " << json_string(c.reference_png) << "},\n"
+         << "  \"reference\": {\"description\": " << json_string(c.reference_description) << ", \"image\": "
+         << (c.reference_png.empty() ? "null" : json_string(c.reference_png)) << "},\n"
          << "  \"relative_mse\": \"mean over pixels and channels of (x - r)^2 / (r^2 + 0.01)\",\n"
+         << "  \"estimated_relative_mse\": \"mean over pixels and channels of h^2 / (m^2 + 0.01), m and h the "
+            "average and half-difference of the two renders\",\n"
          << "  \"runs\": [\n";
     for (size_t i = 0; i < c.runs.size(); ++i) {
         const ComparisonRun &r = c.runs[i];
@@ -167,10 +195,42 @@ void write_results_json(const std::string &path, const Comparison &c) {
              << ", \"seconds\": " << json_number(r.seconds) << ", \"samples_per_pixel\": " << r.samples_per_pixel
              << ", \"relative_mse\": " << json_number(r.error.relative_mse)
              << ", \"rmse\": " << json_number(r.error.rmse) << ", \"rays\": " << r.rays
+             << ", \"estimated_relative_mse\": " << json_number(r.estimated_error.relative_mse)
+             << ", \"estimated_rmse\": " << json_number(r.estimated_error.rmse)
              << ", \"non_finite_samples\": " << r.non_finite_samples
-             << ", \"is_reference\": " << (r.is_reference ? "true" : "false")
              << ", \"image\": " << json_string(r.image) << ", \"png\": " << json_string(r.png)
-             << ", \"error_png\": " << json_string(r.error_png) << "}" << (i + 1 < c.runs.size() ? "," : "") << "\n";
+             << ", \"error_png\": " << json_string(r.error_png) << ", \"renders\": [" << json_string(r.render_a)
+             << ", " << json_string(r.render_b) << "]}" << (i + 1 < c.runs.size() ? "," : "") << "\n";
+    }
+    json << "  ],\n  \"agreement\": [\n";
+    for (size_t i = 0; i < c.agreements.size(); ++i) {
+        const Agreement &a = c.agreements[i];
+        json << "    {\"integrators\": [" << json_string(a.first) << ", " << json_string(a.second)
+             << "], \"agree\": " << (a.agree ? "true" : "false")
+             << ", \"relative_difference\": " << json_number(a.relative_difference)
+             << ", \"z\": " << json_number(a.z) << ", \"threshold\": " << json_number(a.threshold)
+             << ", \"block_size\": " << a.block_size << ", \"blocks\": " << a.blocks << ", \"worst_block\": ["
+             << a.worst_block_x << ", " << a.worst_block_y << "], \"worst_block_z\": " << json_number(a.worst_block_z)
+             << ", \"block_threshold\": " << json_number(a.block_threshold)
+             << ", \"summary\": " << json_string(agreement_sentence(a)) << "}"
+             << (i + 1 < c.agreements.size() ? "," : "") << "\n";
+    }
+    json << "  ],\n  \"first_to_reach\": [\n";
+    for (size_t i = 0; i < std::size(kRelativeMseLevels); ++i) {
+        const double level = kRelativeMseLevels[i];
+        const std::string first = first_to_reach(c, level);
+        json << "    {\"relative_mse\": " << json_number(level) << ", \"integrator\": "
+             << (first.empty() ? "null" : json_string(first)) << ", \"times\": {";
+        for (size_t k = 0; k < c.integrators.size(); ++k) {
+            const ReachTime reach = time_to_reach(c, c.integrators[k], level);
+            json << (k ? ", " : "") << json_string(c.integrators[k]) << ": ";
+            if (reach.seconds < 0)
+                json << "null";
+            else
+                json << "{\"seconds\": " << json_number(reach.seconds)
+                     << ", \"at_most\": " << (reach.at_most ? "true" : "false") << "}";
+        }
+        json << "}}" << (i + 1 < std::size(kRelativeMseLevels) ? "," : "") << "\n";
     }
     json << "  ]\n}\n";
     write_text_file(path, json.str());
@@ -181,7 +241,7 @@ void write_convergence_svg(const std::string &path, const Comparison &c) {
     for (const std::string &name : c.integrators) {
         PlotSeries s{name, {}};
         for (const ComparisonRun &r : c.runs)
-            if (r.integrator == name && !r.is_reference) s.points.push_back({r.seconds, r.error.relative_mse});
+            if (r.integrator == name) s.points.push_back({r.seconds, r.error.relative_mse});
         series.push_back(std::move(s));
     }
     write_text_file(path, log_log_plot_svg(series, "render time (s)", "relative MSE"));
@@ -205,29 +265,64 @@ void write_index_html(const std::string &path, const Comparison &c) {
             "figcaption { font-size: 0.85em; max-width: 22em; }\n"
             ".pair { display: flex; gap: 4px; }\n"
             "img.pixelated { image-rendering: pixelated; }\n"
+            ".disagree { color: #b00; font-weight: bold; }\n"
             "</style>\n</head>\n<body>\n"
          << "<h1>" << xml_escape(title) << "</h1>\n"
          << "<p>Scene <code>" << xml_escape(c.scene_path) << "</code> at " << c.width << "&times;" << c.height
          << ", seed " << c.seed << ", " << c.threads << " thread" << (c.threads == 1 ? "" : "s")
-         << ". Each integrator rendered the scene independently at each time budget (";
+         << ". Each integrator rendered the scene at each time budget (";
     for (size_t i = 0; i < c.budgets.size(); ++i) html << (i ? ", " : "") << seconds_text(c.budgets[i]);
-    html << "). Errors are against the reference below: the relative MSE is the mean over pixels and "
-            "channels of (x&nbsp;&minus;&nbsp;r)<sup>2</sup>&nbsp;/&nbsp;(r<sup>2</sup>&nbsp;+&nbsp;0.01).</p>\n"
-         << "<h2>Reference</h2>\n<figure>\n"
-         << img_tag(c.reference_png, "reference image", reference_size) << "\n<figcaption>"
-         << xml_escape(c.reference_description) << "</figcaption>\n</figure>\n";
+    html << ") as two independent renders of half the budget (seeds " << c.seed << " and " << c.seed + 1
+         << "); the image shown and measured is their average, its time and samples those of both. Its "
+            "noise is estimated from the two renders' half-difference h: relative MSE the mean over pixels "
+            "and channels of h<sup>2</sup>&nbsp;/&nbsp;(m<sup>2</sup>&nbsp;+&nbsp;0.01), m the average, which "
+            "measures variance but not bias. ";
+    if (c.reference_png.empty())
+        html << "No reference was given: the errors below are these estimates.</p>\n";
+    else
+        html << "Errors are against the reference below: the relative MSE is the mean over pixels and "
+                "channels of (x&nbsp;&minus;&nbsp;r)<sup>2</sup>&nbsp;/&nbsp;(r<sup>2</sup>&nbsp;+&nbsp;0.01).</p>\n"
+             << "<h2>Reference</h2>\n<figure>\n"
+             << img_tag(c.reference_png, "reference image", reference_size) << "\n<figcaption>"
+             << xml_escape(c.reference_description) << "</figcaption>\n</figure>\n";
 
-    html << "<h2>Time to reach a relative MSE</h2>\n"
-         << "<p>The shortest budget whose render has a relative MSE at or below each level (no "
-            "interpolation); &mdash; when no budget reached it.</p>\n"
-         << "<table>\n<thead><tr><th>integrator</th>";
-    for (double level : kRelativeMseLevels) html << "<th>&le;&nbsp;" << format("%g", level) << "</th>";
+    html << "<h2>Agreement between integrators</h2>\n"
+         << "<p>Each pair's longest-budget images, set against their own noise (estimated from the two "
+            "renders): the difference of the image means in standard errors (z), and the largest z of a "
+            "block's mean difference, each against a threshold exceeded by chance with probability "
+         << format("%g", kAgreementFalseAlarmRate) << " (for the blocks, Bonferroni over their number). "
+            "A disagreement means that at least one of the two is biased (or that its noise is far from "
+            "normal, e.g. rare fireflies).</p>\n";
+    if (c.agreements.empty()) {
+        html << "<p>Only one integrator: nothing to compare.</p>\n";
+    } else {
+        html << "<ul>\n";
+        for (const Agreement &a : c.agreements)
+            html << "<li" << (a.agree ? "" : " class=\"disagree\"") << ">" << xml_escape(agreement_sentence(a))
+                 << "</li>\n";
+        html << "</ul>\n";
+    }
+
+    html << "<h2>First to reach a relative MSE</h2>\n"
+         << "<p>The render time at which each integrator's relative MSE first reaches each level, "
+            "interpolated on log-log axes between the budgets around it (&le;: already reached at its "
+            "shortest budget, whose time is then an upper bound), and the integrator that got there "
+            "first; &mdash; when no budget reached it.</p>\n"
+         << "<table>\n<thead><tr><th>relative MSE</th><th>first</th>";
+    for (const std::string &name : c.integrators) html << "<th>" << xml_escape(name) << "</th>";
     html << "</tr></thead>\n<tbody>\n";
-    for (const std::string &name : c.integrators) {
-        html << "<tr><td>" << xml_escape(name) << "</td>";
-        for (double level : kRelativeMseLevels) {
-            double budget = budget_to_reach(c, name, level);
-            html << "<td>" << (budget < 0 ? "&mdash;" : seconds_text(budget)) << "</td>";
+    for (double level : kRelativeMseLevels) {
+        const std::string first = first_to_reach(c, level);
+        html << "<tr><td>&le;&nbsp;" << format("%g", level) << "</td><td>"
+             << (first.empty() ? "none" : xml_escape(first)) << "</td>";
+        for (const std::string &name : c.integrators) {
+            const ReachTime reach = time_to_reach(c, name, level);
+            html << "<td>";
+            if (reach.seconds < 0)
+                html << "&mdash;";
+            else
+                html << (reach.at_most ? "&le;&nbsp;" : "") << format("%.3g", reach.seconds) << "&nbsp;s";
+            html << "</td>";
         }
         html << "</tr>\n";
     }
@@ -239,8 +334,11 @@ void write_index_html(const std::string &path, const Comparison &c) {
 
     html << "<h2>Renders and their errors</h2>\n"
          << "<p>Each render (linked to its EXR) beside its error image: every pixel's relative error "
-            "&radic;(mean over channels of (x&nbsp;&minus;&nbsp;r)<sup>2</sup>&nbsp;/&nbsp;(r<sup>2</sup>&nbsp;+&nbsp;0.01)) "
-            "on a log scale from 10<sup>" << format("%g", kErrorImageLog10Min) << "</sup> (dark) to "
+         << (c.reference_png.empty() ? "as estimated, &radic;(mean over channels of h<sup>2</sup>&nbsp;/&nbsp;"
+                                       "(m<sup>2</sup>&nbsp;+&nbsp;0.01)), "
+                                     : "&radic;(mean over channels of (x&nbsp;&minus;&nbsp;r)<sup>2</sup>&nbsp;/"
+                                       "&nbsp;(r<sup>2</sup>&nbsp;+&nbsp;0.01)) ")
+         << "on a log scale from 10<sup>" << format("%g", kErrorImageLog10Min) << "</sup> (dark) to "
          << format("%g", std::pow(10.0, kErrorImageLog10Max)) << " (light); values outside are clamped.</p>\n"
          << error_scale_svg() << "\n";
     for (const std::string &name : c.integrators) {
@@ -253,10 +351,11 @@ void write_index_html(const std::string &path, const Comparison &c) {
                  << img_tag(r.error_png, "relative error of " + label, thumbnail) << "</div>\n<figcaption>"
                  << "budget " << seconds_text(r.budget_seconds) << ": " << r.samples_per_pixel << " spp in "
                  << format("%.3g", r.seconds) << "&nbsp;s, "
-                 << (r.is_reference ? std::string("the reference")
-                                    : "relative MSE " + format("%.3g", r.error.relative_mse) + ", RMSE " +
-                                          format("%.3g", r.error.rmse))
-                 << "</figcaption>\n</figure>\n";
+                 << "relative MSE " << format("%.3g", r.error.relative_mse) << ", RMSE "
+                 << format("%.3g", r.error.rmse);
+            if (!c.reference_png.empty())
+                html << " (estimated from the two renders: " << format("%.3g", r.estimated_error.relative_mse) << ")";
+            html << "</figcaption>\n</figure>\n";
         }
         html << "</div>\n";
     }

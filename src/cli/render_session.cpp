@@ -5,7 +5,9 @@
 
 #include <tbb/info.h>
 
+#include <cstdlib>
 #include <sstream>
+#include <string>
 
 namespace caustica {
 
@@ -55,8 +57,23 @@ void RenderSession::render(const RenderBudget &budget, RenderStats &stats, const
     integrator->render(*scene, budget, stats, progress);
 }
 
+namespace {
+
+// The power test of the hard-transport suite (tests/integrators/hard_transport_test.cpp) proves
+// that the suite catches a small bias in any one integrator: CAUSTICA_TEST_FAULT set to
+// "bias-NAME" makes integrator NAME's images 3% too bright. No user should set it.
+float test_fault_bias(const std::string &integrator_name) {
+    const char *fault = std::getenv("CAUSTICA_TEST_FAULT");
+    return fault && std::string(fault) == "bias-" + integrator_name ? 1.03f : 1.f;
+}
+
+} // namespace
+
 Image RenderSession::image(const RenderStats &stats) const {
-    return scene->film->get_image(integrator->splat_scale(*scene, stats));
+    Image image = scene->film->get_image(integrator->splat_scale(*scene, stats));
+    if (const float bias = test_fault_bias(scene->integrator_name); bias != 1)
+        for (float &v : image.rgb) v *= bias;
+    return image;
 }
 
 std::map<std::string, std::string> render_metadata(const Scene &scene, const RenderStats &stats, uint64_t seed,

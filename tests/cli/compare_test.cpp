@@ -1,7 +1,10 @@
-// `caustica compare`: the files it writes, what they say, its input errors, the report as a
-// browser shows it, and the error colour map and plot it draws with.
+// `caustica compare`: the files it writes, what they say, its input errors, its error estimates
+// and agreement check without a reference, the report as a browser shows it, the "first to
+// reach" table, and the error colour map and plot it draws with. The statistics themselves are
+// tested on synthetic images in render_agreement_test.cpp.
 #include "../integrators/render_test_support.h"
 
+#include "cli/compare_report.h"
 #include "cli/convergence_plot.h"
 #include "cli/error_colour_map.h"
 
@@ -12,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -169,6 +173,25 @@ double relative_mse(const RgbImage &image, const RgbImage &reference) {
     return sum / double(image.rgb.size());
 }
 
+// The relative MSE of the average of two renders as the command estimates it (README): mean
+// over pixels and channels of h^2 / (m^2 + 0.01), m = (a + b) / 2 and h = (a - b) / 2,
+// computed here from the two renders' files.
+double estimated_relative_mse(const RgbImage &a, const RgbImage &b) {
+    double sum = 0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) {
+        double m = 0.5 * (double(a.rgb[i]) + b.rgb[i]), h = 0.5 * (double(a.rgb[i]) - b.rgb[i]);
+        sum += h * h / (m * m + 0.01);
+    }
+    return sum / double(a.rgb.size());
+}
+
+// The header row's column indices by name.
+std::map<std::string, size_t> columns(const std::vector<std::string> &header) {
+    std::map<std::string, size_t> column;
+    for (size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
+    return column;
+}
+
 // Every image (32x32) and report file the command documents, and a summary naming the reference.
 void expect_every_image_and_report_file(const std::string &dir, const std::string &out, const std::string &reference) {
     for (const char *file : {"convergence.csv", "results.json", "convergence.svg", "index.html",
@@ -177,7 +200,7 @@ void expect_every_image_and_report_file(const std::string &dir, const std::strin
     for (const std::string &integrator : kIntegrators)
         for (const std::string &budget : budget_names()) {
             std::string stem = out + "/images/" + integrator + "-" + budget + "s";
-            for (const char *suffix : {".exr", ".png", "-error.png"}) {
+            for (const char *suffix : {".exr", ".png", "-error.png", "-a.exr", "-b.exr"}) {
                 ASSERT_TRUE(fs::is_regular_file(stem + suffix)) << stem + suffix;
                 RgbImage image = read_rgb(stem + suffix);
                 EXPECT_EQ(image.width, 32);
@@ -186,27 +209,29 @@ void expect_every_image_and_report_file(const std::string &dir, const std::strin
         }
     std::string summary = read_text(dir + "/stdout.txt");
     EXPECT_NE(summary.find("reference: reference image " + reference), std::string::npos) << summary;
+    EXPECT_NE(summary.find("agreement at the longest budget:\n  "), std::string::npos) << summary;
+    EXPECT_NE(summary.find("first to reach a relative MSE"), std::string::npos) << summary;
     EXPECT_NE(summary.find("index.html"), std::string::npos) << summary;
 }
 
 // One CSV row per (integrator, budget); the relative MSE it reports is the one computed here
-// from the EXRs; pt's error falls from the shortest to the longest budget.
+// from the EXRs, and so is the estimate from the two renders, whose average the run's image is;
+// pt's error falls from the shortest to the longest budget.
 //
 // Why the fall is reliable: pt renders this 32x32 scene at roughly 5e5 samples/s, so the 1/32 s
-// budget gets some 10-20 spp and the 0.5 s budget some 150-300 (16 times the time; a render
-// always completes at least 1 spp). With the same seed the longer render's samples include the
-// shorter one's, and against the independent 512-spp reference the expected relative MSE goes
-// as V/n + V/512: the longest run's is about a tenth of the shortest's. The measured value is a
-// mean over 3072 pixel channels, whose spread is a few percent of it, so the order can only
-// flip if the long render got less than about a tenth of the processor time per second that
-// the short one did.
+// budget (two renders of 1/64 s) gets some 10-20 spp and the 0.5 s budget some 150-300 (16
+// times the time; a render always completes at least 1 spp). With the same seeds the longer
+// budget's samples include the shorter one's, and against the independent 512-spp reference the
+// expected relative MSE goes as V/n + V/512: the longest run's is about a tenth of the
+// shortest's. The measured value is a mean over 3072 pixel channels, whose spread is a few
+// percent of it, so the order can only flip if the long renders got less than about a tenth of
+// the processor time per second that the short ones did.
 void expect_csv_rows_and_path_tracing_convergence(const std::string &out, const std::string &reference_path) {
     auto rows = read_csv(out + "/convergence.csv");
     ASSERT_FALSE(rows.empty());
-    std::map<std::string, size_t> column;
-    for (size_t i = 0; i < rows[0].size(); ++i) column[rows[0][i]] = i;
+    std::map<std::string, size_t> column = columns(rows[0]);
     for (const char *name : {"integrator", "budget_seconds", "seconds", "samples_per_pixel", "relative_mse", "rmse",
-                             "rays", "non_finite_samples", "image"})
+                             "estimated_relative_mse", "rays", "non_finite_samples", "image", "render_a", "render_b"})
         ASSERT_TRUE(column.count(name)) << name;
     ASSERT_EQ(rows.size(), 1 + kIntegrators.size() * budget_names().size());
 
@@ -225,6 +250,12 @@ void expect_csv_rows_and_path_tracing_convergence(const std::string &out, const 
         double relmse = std::stod(row[column["relative_mse"]]);
         RgbImage image = read_rgb(out + "/" + row[column["image"]]);
         EXPECT_NEAR(relmse, relative_mse(image, reference), 1e-6 * relmse + 1e-12) << row[column["image"]];
+        RgbImage a = read_rgb(out + "/" + row[column["render_a"]]), b = read_rgb(out + "/" + row[column["render_b"]]);
+        double estimate = std::stod(row[column["estimated_relative_mse"]]);
+        EXPECT_GT(estimate, 0) << row[column["image"]];
+        EXPECT_NEAR(estimate, estimated_relative_mse(a, b), 1e-5 * estimate) << row[column["image"]];
+        for (size_t i = 0; i < image.rgb.size(); ++i)
+            ASSERT_FLOAT_EQ(image.rgb[i], 0.5f * (a.rgb[i] + b.rgb[i])) << row[column["image"]] << " value " << i;
         relmse_by_integrator[integrator].push_back(relmse);
     }
     for (const std::string &integrator : kIntegrators)
@@ -244,7 +275,8 @@ void expect_valid_results_json(const std::string &out) {
         ++runs;
     EXPECT_EQ(runs, kIntegrators.size() * budget_names().size());
     for (const char *key : {"\"relative_mse\"", "\"rmse\"", "\"samples_per_pixel\"", "\"non_finite_samples\"",
-                            "\"reference\"", "\"rays\""})
+                            "\"reference\"", "\"rays\"", "\"estimated_relative_mse\"", "\"agreement\"",
+                            "\"first_to_reach\""})
         EXPECT_NE(json.find(key), std::string::npos) << key;
 }
 
@@ -328,34 +360,61 @@ TEST(CompareInput, BadInputExitsWithStatusTwoBeforeWritingAnything) {
     EXPECT_FALSE(fs::exists(dir + "/missing"));
     EXPECT_EQ(run_caustica(base + "--integrators pt --out " + dir + "/no-time --time 0"), 2);
     EXPECT_FALSE(fs::exists(dir + "/no-time"));
+
+    // A Sampler "seed" would make each budget's two renders the same, and their difference zero.
+    std::string scene = read_text(kCornell);
+    const std::string sampler = "Sampler \"independent\" \"integer pixelsamples\" [ 64 ]";
+    ASSERT_NE(scene.find(sampler), std::string::npos);
+    scene.replace(scene.find(sampler), sampler.size(), sampler + " \"integer seed\" [ 3 ]");
+    const std::string seeded = dir + "/seeded.pbrt";
+    std::ofstream(seeded) << scene;
+    EXPECT_EQ(run_caustica("compare " + seeded + " --time 0.1 --resolution 16x16 --integrators pt --out " + dir +
+                               "/seeded",
+                           dir + "/seeded.txt"),
+              2);
+    const std::string message = read_text(dir + "/seeded.txt");
+    EXPECT_NE(message.find("seeded.pbrt:6:"), std::string::npos) << message;
+    EXPECT_FALSE(fs::exists(dir + "/seeded"));
 }
 
-// Without --reference, the first integrator's longest run is the reference: the summary names
-// it, and its own row is marked and has zero error.
-TEST(CompareInput, WithoutReferenceTheFirstIntegratorsLongestRunIsTheReference) {
+// Without --reference no run is the reference: every run's error is the one estimated from its
+// two renders (positive, and what is computed here from their files), the summary says so and
+// reports the agreement of pt's and bdpt's longest runs and the first to reach each error level.
+TEST(CompareInput, WithoutReferenceEveryRunHasAnErrorEstimatedFromItsTwoRenders) {
     std::string dir = scratch_dir("compare-self");
     // The scene after --integrators's list is not read as a second integrator.
-    ASSERT_EQ(run_with_stdout("compare --integrators pt " + kCornell + " --time 0.125 --resolution 16x16 --out " +
+    ASSERT_EQ(run_with_stdout("compare --integrators pt,bdpt " + kCornell + " --time 0.125 --resolution 16x16 --out " +
                                   dir + "/out",
                               dir + "/stdout.txt"),
               0);
     std::string summary = read_text(dir + "/stdout.txt");
-    EXPECT_NE(summary.find("the longest run of the first integrator, pt at 0.125 s (images/pt-0.125s.exr)"),
+    EXPECT_NE(summary.find("reference: none given: each error is estimated from the difference of the budget's two "
+                           "independent renders"),
               std::string::npos)
         << summary;
+    EXPECT_EQ(summary.find("longest run"), std::string::npos) << summary;
+    EXPECT_TRUE(summary.find("  agree: pt and bdpt differ by ") != std::string::npos ||
+                summary.find("  DISAGREE: pt and bdpt differ by ") != std::string::npos)
+        << summary;
+    EXPECT_NE(summary.find("  <= 0.1: "), std::string::npos) << summary;
+    EXPECT_EQ(read_text(dir + "/out/index.html").find("images/reference.png"), std::string::npos);
+
     auto rows = read_csv(dir + "/out/convergence.csv");
-    ASSERT_EQ(rows.size(), 6u);
-    std::map<std::string, size_t> column;
-    for (size_t i = 0; i < rows[0].size(); ++i) column[rows[0][i]] = i;
-    ASSERT_TRUE(column.count("is_reference") && column.count("image") && column.count("relative_mse"));
-    int references = 0;
-    for (size_t r = 1; r < rows.size(); ++r)
-        if (rows[r][column["is_reference"]] == "true") {
-            ++references;
-            EXPECT_EQ(rows[r][column["image"]], "images/pt-0.125s.exr");
-            EXPECT_EQ(std::stod(rows[r][column["relative_mse"]]), 0.0);
-        }
-    EXPECT_EQ(references, 1);
+    ASSERT_EQ(rows.size(), 11u);
+    std::map<std::string, size_t> column = columns(rows[0]);
+    EXPECT_FALSE(column.count("is_reference"));
+    ASSERT_TRUE(column.count("relative_mse") && column.count("estimated_relative_mse") && column.count("render_a") &&
+                column.count("render_b"));
+    for (size_t r = 1; r < rows.size(); ++r) {
+        double relmse = std::stod(rows[r][column["relative_mse"]]);
+        EXPECT_GT(relmse, 0) << r;
+        EXPECT_EQ(relmse, std::stod(rows[r][column["estimated_relative_mse"]])) << r;
+        EXPECT_NEAR(relmse,
+                    estimated_relative_mse(read_rgb(dir + "/out/" + rows[r][column["render_a"]]),
+                                           read_rgb(dir + "/out/" + rows[r][column["render_b"]])),
+                    1e-5 * relmse)
+            << r;
+    }
 }
 
 // The error colour map's lightness: L* computed here from the colour's luminance (Rec. 709
@@ -405,6 +464,44 @@ TEST(ConvergencePlot, DrawsSeriesMarkersAndDecadeLabels) {
     EXPECT_EQ(count("<rect x="), 1u + 1u + 1u); // markers + legend + the plot frame
     for (const char *label : {">&#8722;2<", ">1<", ">&#8722;4<", ">0<"})
         EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
+// The "first to reach" table on runs with known errors: pt's relative MSE halves with each
+// doubling of time (0.1, 0.05, 0.025 at 1, 2, 4 s), bdpt's falls five-fold (0.2, 0.04, 0.008).
+// Between budgets the time is interpolated on log-log axes, so for 0.03 pt needs 2 s x 2^(log
+// (0.03/0.05) / log(1/2)) = 10/3 s and bdpt 2^(log(0.15) / log(0.2)) = 2.26 s: bdpt is first,
+// though both first reach it at their 4 s budget. 0.1 pt's shortest run already had (at most
+// 1 s, before bdpt's 1.35 s); 0.01 only bdpt reaches; 0.001 neither.
+TEST(CompareFirstToReach, InterpolatesBetweenBudgetsOnLogLogAxes) {
+    caustica::Comparison c;
+    c.integrators = {"pt", "bdpt"};
+    auto add = [&](const std::string &name, double seconds, double relmse) {
+        caustica::ComparisonRun run;
+        run.integrator = name;
+        run.seconds = seconds;
+        run.error.relative_mse = relmse;
+        c.runs.push_back(run);
+    };
+    add("pt", 1, 0.1);
+    add("pt", 2, 0.05);
+    add("pt", 4, 0.025);
+    add("bdpt", 1, 0.2);
+    add("bdpt", 2, 0.04);
+    add("bdpt", 4, 0.008);
+
+    EXPECT_EQ(caustica::first_to_reach(c, 0.03), "bdpt");
+    EXPECT_NEAR(caustica::time_to_reach(c, "pt", 0.03).seconds, 10.0 / 3, 1e-9);
+    EXPECT_NEAR(caustica::time_to_reach(c, "bdpt", 0.03).seconds, std::pow(2.0, std::log(0.15) / std::log(0.2)), 1e-9);
+    EXPECT_FALSE(caustica::time_to_reach(c, "bdpt", 0.03).at_most);
+
+    EXPECT_EQ(caustica::first_to_reach(c, 0.1), "pt");
+    EXPECT_EQ(caustica::time_to_reach(c, "pt", 0.1).seconds, 1);
+    EXPECT_TRUE(caustica::time_to_reach(c, "pt", 0.1).at_most);
+
+    EXPECT_EQ(caustica::first_to_reach(c, 0.01), "bdpt");
+    EXPECT_LT(caustica::time_to_reach(c, "pt", 0.01).seconds, 0);
+
+    EXPECT_EQ(caustica::first_to_reach(c, 0.001), "");
 }
 
 } // namespace
