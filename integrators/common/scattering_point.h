@@ -68,14 +68,15 @@ struct ScatteringPoint {
         float pdf_forward = 0, pdf_reverse = 0;
     };
     Connection connect_towards(Vec3f w, TransportMode mode) const {
-        Connection c{f(w, mode)};
-        if (c.f.is_black()) return c;
         if (in_medium()) {
-            c.pdf_forward = c.pdf_reverse = medium->phase().pdf(wo, w);
-            return c;
+            const float p = medium->phase().p(wo, w);
+            return {SampledSpectrum(p), p, p};
         }
-        c.pdf_forward = bsdf.pdf(wo, w, mode);
-        c.pdf_reverse = bsdf.pdf(w, wo, adjoint(mode));
+        const BxDFEvaluation e = bsdf.evaluate(wo, w, mode);
+        if (e.f.is_black()) return {};
+        const float cosine = mode == TransportMode::Radiance ? abs_dot(w, ns) : importance_cosine(ng, ns, wo, w);
+        Connection c{e.f * cosine, e.pdf_forward, e.pdf_reverse};
+        if (c.f.is_black()) return {};
         return c;
     }
 };

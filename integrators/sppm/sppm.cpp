@@ -6,11 +6,12 @@
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/light_sampling.h"
 #include "integrators/common/merge_radius.h"
-#include "integrators/common/path_segment.h"
+#include "integrators/common/light_path_start.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/photon_search_parameter.h"
 #include "integrators/common/photon_side.h"
 #include "integrators/common/profile_subsurface.h"
+#include "integrators/common/subpath_walk.h"
 #include "integrators/common/wavelength_groups.h"
 #include "materials/disney_material.h"
 #include "media/medium_interface.h"
@@ -61,7 +62,12 @@ SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
                          "\"maxdepth\" must lie in [0, " + std::to_string(StoredPhoton::MaxDepth) + "]");
     if (initial_radius_ < 0 || !std::isfinite(initial_radius_))
         throw InputError(params.location("radius"), "\"radius\" must be a positive distance (or 0 for the default)");
-    if (initial_radius_ == 0) initial_radius_ = default_merge_radius(scene);
+    // A radius given in the scene is used on surfaces and in media alike.
+    initial_medium_radius_ = initial_radius_;
+    if (initial_radius_ == 0) {
+        initial_radius_ = default_merge_radius(scene);
+        initial_medium_radius_ = default_medium_merge_radius(scene, initial_radius_);
+    }
     if (photons_per_iteration_ == 0 || photons_per_iteration_ < -1)
         throw InputError(params.location("photonsperiteration"),
                          "\"photonsperiteration\" must be positive (or -1: one per pixel)");
@@ -77,12 +83,30 @@ constexpr int kPhotonDimension = 1 << 12;
 // 2009 use 0.7; pbrt-v4 2/3).
 constexpr float kGamma = 2.f / 3.f;
 
+} // namespace
+
+void SPPM::KernelEstimate::update(const RGB &phi, float m, int dimension) {
+    const float n_new = photons + kGamma * m;
+    const float ratio = n_new / (photons + m);
+    const float r_new = radius * (dimension == 2 ? std::sqrt(ratio) : std::cbrt(ratio));
+    const float shrink = r_new / radius;
+    tau = (tau + phi) * (dimension == 2 ? sqr(shrink) : shrink * sqr(shrink));
+    photons = n_new;
+    radius = r_new;
+}
+
+namespace {
+
 struct VisiblePoint {
     Vec3f p, ng, ns, wo;
     int depth = 0;             // scattering vertices on the camera path before this one
-    BSDF bsdf;                 // in the iteration's scratch memory; null: no visible point
+    BSDF bsdf;                 // surface points, in the iteration's scratch memory
+    const Medium *medium = nullptr; // points inside a participating medium
     SampledSpectrum beta;      // camera path throughput up to the point
     SampledWavelengths lambda; // the path's wavelengths (terminated if it crossed dispersion)
+
+    bool exists() const { return bsdf || medium; }
+    bool in_medium() const { return medium != nullptr; }
 };
 
 // A pixel's camera path this iteration (its estimate is in SPPM::estimates_). A visible point
@@ -91,6 +115,9 @@ struct VisiblePoint {
 struct PixelState {
     RGB direct;
     VisiblePoint vp, subsurface_vp;
+    // The camera path's scattering events in media, where it gathers the photons of volumetric
+    // caustics (see trace_camera_path).
+    std::vector<VisiblePoint> medium_vps;
 };
 
 // The second visible point of a camera path that reached the profile-subsurface solid at si
@@ -115,25 +142,31 @@ void find_subsurface_visible_point(const Scene &scene, const SurfaceInteraction 
     L += beta * sample_direct_lighting(scene, at, exit->bsdf, LightSampleContext{at.p, at.n, at.shading.n}, lambda,
                                        sampler, ctx.rays, TransportMode::Radiance, DirectLighting::LightSamplingOnly,
                                        medium);
-    subsurface_vp = VisiblePoint{at.p, at.n, at.shading.n, at.wo, depth, exit->bsdf, beta, lambda};
+    subsurface_vp = VisiblePoint{at.p, at.n, at.shading.n, at.wo, depth, exit->bsdf, nullptr, beta, lambda};
 }
 
-// Direct lighting and the visible point of one pixel's camera path.
+// Direct lighting and the visible points of one pixel's camera path.
 // lambda is terminated in place if the path crosses dispersion: L is in its measure.
 //
 // Participating media (which pbrt-v4's SPPM does not handle). Every light-carrying path is
-// counted by exactly one of three estimators:
+// counted by exactly one of these estimators:
 //   - the camera path reaching an emitter, or next-event estimation at a camera vertex that
 //     continues (glossy surfaces: the two weighted by MIS; specular ones: the hit alone);
-//   - at a camera vertex in a medium, next-event estimation ALONE: the emitter hit right after
-//     a medium scattering event (through medium boundaries only) is not counted, and the camera
-//     path goes on by sampling the phase function, so that light scattered any further is found
-//     at its later vertices;
+//   - at each camera vertex in a medium, next-event estimation for the light that arrives
+//     unscattered, and, for delta lights (point, spot, distant), the caustic photons: the light
+//     that arrives through specular surfaces only (a spot light focused by glass into fog),
+//     which no camera path can find, as no camera path can hit a delta light. They are photons
+//     deposited in media straight after one or more specular bounces (trace_photon), gathered
+//     within a sphere. The camera path then goes on by sampling the phase function, so that
+//     light scattered any further is found at its later vertices; an emitter that it hits
+//     straight from the medium vertex belongs to that vertex's light sampling, and one that it
+//     reaches through specular surfaces is counted (only lights that can be hit emit there);
 //   - at the visible point (the first diffuse surface), next-event estimation for light that
 //     arrives unscattered, and the photons for all the rest: a photon is deposited at a surface
-//     only after at least one scattering event, on a surface or in a medium (trace_photon).
-// Photons are never deposited in media: the camera path resolves the media between the camera
-// and its visible point itself, and the light paths those beyond it.
+//     after at least one scattering event, on a surface or in a medium.
+// Only the volumetric caustics of delta lights are density estimates in media; the rest of the
+// light in a medium is found by the camera path, without the blur of a kernel that a boundary
+// cuts.
 //
 // Profile subsurface (profile_subsurface.h). The BSDF at a visible point on such a solid leaves
 // the subsurface entry out of f (disney_bxdf.h), so its photons give the surface reflection
@@ -144,182 +177,123 @@ void find_subsurface_visible_point(const Scene &scene, const SurfaceInteraction 
 // estimate is unbiased though it is taken only that often.) Photons jump through profiles too
 // but are not deposited at exits: the light arriving at an exit through the interior is
 // exactly what the camera's jump gathers at the other end.
-void trace_camera_path(const Scene &scene, int max_depth, Ray ray, SampledSpectrum beta,
+void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const SampledSpectrum &weight,
                        SampledWavelengths &lambda, IterationPixelContext &ctx, SampledSpectrum &L,
-                       VisiblePoint &vp, VisiblePoint &subsurface_vp) {
+                       PixelState &state) {
+    Sampler &sampler = ctx.sampler;
+    // The visible points' BSDFs must outlive the camera pass.
+    SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, ctx.iteration_scratch, ctx.rays, false);
+    walk.start(ray, scene.camera_medium, weight);
     bool specular_bounce = false;
-    bool medium_scatter = false;   // the last scattering event was in a medium
+    bool medium_scatter = false; // the last scattering event was in a medium
     float bsdf_pdf = 0;
     LightSampleContext previous{};
-    const Medium *medium = scene.camera_medium;
-    const Material *absorbing_interior = nullptr;
-    FreeFlightMIS free_flight;
-    Sampler &sampler = ctx.sampler;
     // Emission reached by BSDF sampling, weighted against next-event estimation as in the path
-    // tracer (only glossy bounces can precede it: the path stops at diffuse surfaces), and left
-    // to next-event estimation alone after a medium scattering event.
+    // tracer (only glossy bounces can precede it: the path stops at diffuse surfaces).
     auto add_emission = [&](const Light &light, const SampledSpectrum &Le, int depth, Vec3f wi) {
         if (medium_scatter) return;
         float w = 1;
-        if (depth > 0 && !specular_bounce)
-            w = power_heuristic(1, bsdf_pdf, 1, light_pdf(scene, light, previous, wi));
-        L += beta * Le * w;
+        if (depth > 0 && !specular_bounce) w = power_heuristic(1, bsdf_pdf, 1, light_pdf(scene, light, previous, wi));
+        L += walk.beta * Le * w;
     };
     for (int depth = 0;; ++depth) {
-        SurfaceInteraction si;
-        ++ctx.rays;
-        bool hit = scene.intersect(ray, &si);
-        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler, free_flight);
-        beta *= segment.weight;
-        if (beta.is_black()) return;
-        if (segment.scattered) {
-            if (depth == max_depth) return;
-            const Vec3f wo = -normalize(ray.d), p = ray.o - wo * segment.t;
-            L += beta * sample_direct_lighting_in_medium(scene, p, wo, *medium, lambda, sampler, ctx.rays,
-                                                         DirectLighting::LightSamplingOnly);
-            // The phase function is sampled exactly: beta is unchanged.
-            PhaseSample ps = medium->phase().sample_p(wo, sampler.get_2d());
-            medium_scatter = true;
-            ray = Ray{p, ps.wi, Infinity};
-            continue;
-        }
-        if (!hit) {
+        const WalkEvent event = walk.advance();
+        if (event == WalkEvent::Ended) return;
+        if (event == WalkEvent::Escaped) {
             for (const Light *light : scene.infinite_lights)
-                add_emission(*light, light->Le(ray, lambda), depth, normalize(ray.d));
+                add_emission(*light, light->Le(walk.ray(), lambda), depth, normalize(walk.ray().d));
             return;
         }
+        const ScatteringPoint &point = walk.vertex();
+        if (point.in_medium()) {
+            if (depth == max_depth) return;
+            L += walk.beta * sample_direct_lighting_in_medium(scene, point.p, point.wo, *point.medium, lambda, sampler,
+                                                             ctx.rays, DirectLighting::LightSamplingOnly);
+            state.medium_vps.push_back(
+                VisiblePoint{point.p, Vec3f{}, Vec3f{}, point.wo, depth, BSDF(), point.medium, walk.beta, lambda});
+            if (!walk.scatter()) return;
+            medium_scatter = true;
+            continue;
+        }
+        const SurfaceInteraction &si = walk.hit();
         if (si.area_light)
             add_emission(*si.area_light, si.area_light->L(si.p, si.n, si.uv, si.wo, lambda), depth, -si.wo);
-        BSDF bsdf = si.material ? shade(si, lambda, ctx.iteration_scratch) : BSDF();
-        if (!bsdf) {
-            medium = medium_after(si, ray.d, medium);
-            ray = si.spawn_ray(ray.d);
+        if (!point.bsdf) {
+            walk.pass_through();
             --depth;
             continue;
         }
         if (depth == max_depth) return;
+        const BSDF &bsdf = point.bsdf;
         const LightSampleContext here{si.p, si.n, si.shading.n};
         const BxDFFlags flags = bsdf.flags();
         // The path ends at its visible point, so there the light is found by light sampling
         // alone; where it goes on, BSDF-sampled hits on lights take their share by MIS.
         const bool visible_point = is_diffuse(flags) || (is_glossy(flags) && depth == max_depth - 1);
         if (is_non_specular(flags))
-            L += beta * sample_direct_lighting(scene, si, bsdf, here, lambda, sampler, ctx.rays,
-                                               TransportMode::Radiance,
-                                               visible_point ? DirectLighting::LightSamplingOnly
-                                                             : DirectLighting::WeightedAgainstBsdfSampling,
-                                               medium);
+            L += walk.beta * sample_direct_lighting(scene, si, bsdf, here, lambda, sampler, ctx.rays,
+                                                    TransportMode::Radiance,
+                                                    visible_point ? DirectLighting::LightSamplingOnly
+                                                                  : DirectLighting::WeightedAgainstBsdfSampling,
+                                                    walk.medium());
         if (visible_point) {
-            vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, depth, bsdf, beta, lambda};
+            state.vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, depth, bsdf, nullptr, walk.beta, lambda};
             if (si.material->has_profile_subsurface())
-                find_subsurface_visible_point(scene, si, bsdf, depth, beta, lambda, medium, ctx, L, subsurface_vp);
+                find_subsurface_visible_point(scene, si, bsdf, depth, walk.beta, lambda, walk.medium(), ctx, L,
+                                              state.subsurface_vp);
             return;
         }
-        float u = sampler.get_1d();
-        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
-        if (!bs) return;
-        if (bs->dispersive && !lambda.secondary_terminated()) {
-            lambda.terminate_secondary();
-            for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
-        }
-        beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf);
-        bsdf_pdf = bs->pdf_is_proportional ? bsdf.pdf(si.wo, bs->wi) : bs->pdf;
-        specular_bounce = bs->is_specular();
+        // Specular and glossy surfaces have no subsurface entry (that is a diffuse lobe).
+        const std::optional<WalkScatter> s = walk.scatter();
+        if (!s || s->profile) return;
+        bsdf_pdf = s->pdf_fwd;
+        specular_bounce = s->specular;
         medium_scatter = false;
         previous = here;
-        if (bs->is_transmission() && si.material->has_interior_absorption())
-            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-        medium = medium_after(si, bs->wi, medium);
-        ray = si.spawn_ray(bs->wi);
-        if (beta.is_black()) return;
+        if (walk.beta.is_black()) return;
     }
 }
 
-// One photon path: every non-specular surface reached after at least one scattering event
-// (on a surface or in a medium) is a photon; see trace_camera_path for why.
+// One photon path: every non-specular surface reached after at least one scattering event, and,
+// from a delta light, every medium event reached through specular surfaces only (at least one),
+// is a photon; see trace_camera_path for why. The emitted flux is kept apart from the walk's throughput, on which
+// Russian roulette acts as in every other integrator.
 void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, IterationPixelContext &ctx,
-                  SppmPhotonMap &photons) {
+                  SppmPhotonMap &surface_photons, SppmPhotonMap &medium_photons) {
     Sampler &sampler = ctx.sampler;
-    auto chosen = scene.light_sampler->sample(sampler.get_1d());
-    Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
-    if (!chosen) return;
-    auto les = chosen->light->sample_le(u_position, u_direction, lambda);
-    if (!les || les->L.is_black() || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return;
-    const float cos_light = les->n == Vec3f{} ? 1.f : abs_dot(les->n, normalize(les->ray.d));
-    SampledSpectrum beta = les->L * (cos_light / (chosen->pmf * les->pdf_pos * les->pdf_dir));
-    Ray ray = les->ray;
+    const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda);
+    if (!start) return;
     // Area lights' paths leave into the medium outside their shape (the side they emit to).
-    const Medium *medium = chosen->light->medium();
-    const Material *absorbing_interior = nullptr;
-    FreeFlightMIS free_flight;
-    for (int depth = 0; depth < max_depth; ++depth) {
-        SurfaceInteraction si;
-        ++ctx.rays;
-        bool hit = scene.intersect(ray, &si);
-        PathSegment segment = traverse_segment(medium, absorbing_interior, hit ? si.t * length(ray.d) : Infinity,
-                                               lambda, sampler, free_flight);
-        if (segment.scattered) {
-            // Scattering in the medium: the event's weight sigma_s T / density stands where a
-            // surface has f |cos| / pdf (the phase function is sampled exactly), and Russian
-            // roulette keeps the photon's power as at a surface.
-            const Vec3f wo = -normalize(ray.d), p = ray.o - wo * segment.t;
-            PhaseSample ps = medium->phase().sample_p(wo, sampler.get_2d());
-            SampledSpectrum next = beta * segment.weight;
-            float q = std::max(0.f, 1 - next.max_value() / beta.max_value());
-            if (sampler.get_1d() < q) return;
-            beta = next / (1 - q);
-            ray = Ray{p, ps.wi, Infinity};
-            if (beta.is_black()) return;
+    SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.sample_scratch, ctx.rays, false);
+    walk.start(start->les.ray, start->light->medium(), SampledSpectrum(1.f));
+    // Every scattering vertex so far was a specular bounce, from a light no camera path can hit.
+    bool delta_caustic = is_delta_light(start->light->type());
+    for (int depth = 0; depth < max_depth && walk.advance() == WalkEvent::Vertex;) {
+        const ScatteringPoint &point = walk.vertex();
+        if (!point.in_medium() && !point.bsdf) {
+            walk.pass_through();
             continue;
         }
-        beta *= segment.weight;
-        if (!hit || beta.is_black()) return;
-        BSDF bsdf = si.material ? shade(si, lambda, ctx.sample_scratch) : BSDF();
-        if (!bsdf) {
-            medium = medium_after(si, ray.d, medium);
-            ray = si.spawn_ray(ray.d);
-            --depth;
-            continue;
+        // The vertex, then (not a photon) the exit of a profile solid that its direction enters.
+        while (true) {
+            const bool photon = point.in_medium() ? delta_caustic : is_non_specular(point.bsdf.flags());
+            if (depth > 0 && !walk.after_jump() && photon) {
+                const SampledSpectrum beta = start->flux * walk.beta;
+                const StoredPhoton photon{{beta[0], beta[1], beta[2], beta[3]},
+                                          encode_octahedral(point.wo),
+                                          point.in_medium() ? uint16_t(0) : encode_octahedral_coarse(point.ng),
+                                          uint16_t(depth),
+                                          lambda.secondary_terminated()};
+                (point.in_medium() ? medium_photons : surface_photons).add(point.p, photon);
+            }
+            const std::optional<WalkScatter> s = walk.scatter();
+            if (!s) return;
+            delta_caustic = delta_caustic && s->specular;
+            if (!s->profile) break;
+            if (!walk.jump(*s->profile)) return;
         }
-        if (depth > 0 && is_non_specular(bsdf.flags())) {
-            photons.add(si.p, StoredPhoton{{beta[0], beta[1], beta[2], beta[3]},
-                                           encode_octahedral(si.wo),
-                                           encode_octahedral_coarse(si.n),
-                                           uint16_t(depth),
-                                           lambda.secondary_terminated()});
-        }
-        float u = sampler.get_1d();
-        auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Importance);
-        if (!bs) return;
-        if (bs->dispersive && !lambda.secondary_terminated()) {
-            lambda.terminate_secondary();
-            for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
-        }
-        SampledSpectrum next = beta * bs->f * (importance_cosine(si, si.wo, bs->wi) / bs->pdf);
-        // Where the photon leaves the surface, and in which direction: through a profile solid
-        // (see trace_camera_path), at the exit the profile samples, by its exit lobe.
-        const SurfaceInteraction *leaving = &si;
-        Vec3f wi = bs->wi;
-        std::optional<ProfileExit> exit;
-        if (const DisneyMaterial *material = profile_entry(si, *bs)) {
-            exit = sample_profile_exit(scene, *material, si, lambda, sampler, ctx.sample_scratch, ctx.rays);
-            if (!exit) return;
-            auto exit_sample = exit->bsdf.sample_f(exit->si.wo, 0, sampler.get_2d(), TransportMode::Importance);
-            if (!exit_sample) return;
-            leaving = &exit->si;
-            wi = exit_sample->wi;
-            next *= exit->weight * exit_sample->f * (importance_cosine(*leaving, leaving->wo, wi) / exit_sample->pdf);
-        } else if (bs->is_transmission() && si.material->has_interior_absorption()) {
-            absorbing_interior = dot(bs->wi, si.n) < 0 ? si.material : nullptr;
-        }
-        // Russian roulette keeps the photons' power roughly constant (pbrt-v4 15.4.2).
-        float q = std::max(0.f, 1 - next.max_value() / beta.max_value());
-        if (sampler.get_1d() < q) return;
-        beta = next / (1 - q);
-        medium = medium_after(*leaving, wi, medium);
-        ray = leaving->spawn_ray(wi);
-        if (beta.is_black()) return;
+        ++depth;
+        if (!walk.russian_roulette(depth)) return;
     }
 }
 
@@ -333,16 +307,22 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     // A resumed render continues from the restored estimates.
     if (stats.samples_per_pixel == 0) {
         PixelEstimate initial;
-        initial.radius = initial_radius_;
+        initial.surface.radius = initial_radius_;
+        initial.medium.radius = initial_medium_radius_;
         estimates_.assign(pixels.size(), initial);
     }
     if (estimates_.size() != pixels.size())
         throw std::runtime_error("sppm: resumed without the estimates of the pixels");
     const size_t photon_count = photons_per_iteration_ > 0 ? size_t(photons_per_iteration_) : pixels.size();
     WavelengthGroups groups(wavelength_groups_, seed_);
-    std::deque<SppmPhotonMap> maps; // per wavelength group
+    // Per wavelength group: the photons on surfaces and those in media, gathered by visible
+    // points of the same kind only.
+    std::deque<SppmPhotonMap> surface_maps, medium_maps;
     auto photon_blocks = std::make_shared<SppmPhotonMap::Pool>();
-    for (int g = 0; g < wavelength_groups_; ++g) maps.emplace_back(photon_search_, photon_blocks);
+    for (int g = 0; g < wavelength_groups_; ++g) {
+        surface_maps.emplace_back(photon_search_, photon_blocks);
+        medium_maps.emplace_back(photon_search_, photon_blocks);
+    }
     int iterations = 0;
 
     {
@@ -356,10 +336,10 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 ctx.sampler.get_1d(); // the hero wavelength is the group's
                 CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
                 state.vp = state.subsurface_vp = VisiblePoint{};
+                state.medium_vps.clear();
                 SampledSpectrum L(0.f);
                 if (auto camera_ray = scene.camera->generate_ray(cs, lambda))
-                    trace_camera_path(scene, max_depth_, camera_ray->ray, camera_ray->weight, lambda, ctx, L,
-                                      state.vp, state.subsurface_vp);
+                    trace_camera_path(scene, max_depth_, camera_ray->ray, camera_ray->weight, lambda, ctx, L, state);
                 if (L.has_non_finite()) {
                     ++ctx.non_finite;
                     L = SampledSpectrum(0.f);
@@ -370,18 +350,27 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
 
             // Photon pass, then the groups' maps, independent of each other: indexed in parallel
             // (one after another, they kept the second thread idle for a tenth of the render).
-            for (SppmPhotonMap &map : maps) map.clear();
+            for (int g = 0; g < groups.count(); ++g) {
+                surface_maps[g].clear();
+                medium_maps[g].clear();
+            }
             completed = renderer.for_each_path(iteration, photon_count, kPhotonDimension,
                                                [&](size_t index, IterationPixelContext &ctx) {
                 const int g = groups.group_of_light_path(index);
-                trace_photon(scene, max_depth_, groups.wavelengths(g), ctx, maps[g]);
+                trace_photon(scene, max_depth_, groups.wavelengths(g), ctx, surface_maps[g], medium_maps[g]);
             });
             if (!completed) return false;
-            float max_radius = 0;
-            for (const PixelEstimate &estimate : estimates_) max_radius = std::max(max_radius, estimate.radius);
-            tbb::parallel_for(0, groups.count(), [&](int g) { maps[g].build(max_radius); });
+            float max_surface_radius = 0, max_medium_radius = 0;
+            for (const PixelEstimate &estimate : estimates_) {
+                max_surface_radius = std::max(max_surface_radius, estimate.surface.radius);
+                max_medium_radius = std::max(max_medium_radius, estimate.medium.radius);
+            }
+            tbb::parallel_for(0, groups.count(), [&](int g) {
+                surface_maps[g].build(max_surface_radius);
+                medium_maps[g].build(max_medium_radius);
+            });
             uint64_t stored = 0;
-            for (const SppmPhotonMap &map : maps) stored += map.size();
+            for (int g = 0; g < groups.count(); ++g) stored += surface_maps[g].size() + medium_maps[g].size();
             stats.stored_light_vertices = std::max<uint64_t>(stats.stored_light_vertices, stored);
 
             // Gather pass: each visible point's photons, then the progressive update. It traces
@@ -391,20 +380,9 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             auto gather = [&](const VisiblePoint &vp, int g, float radius, int &gathered) -> RGB {
                 SampledSpectrum phi(0.f);
                 int count = 0;
-                maps[g].for_each_within(vp.p, radius, [&](const StoredPhoton &photon) {
-                    // "maxdepth" bounds the scattering vertices of the whole path, as for the
-                    // other integrators (pbrt-v4 bounds each subpath separately instead).
-                    if (photon.depth + 1 + vp.depth > max_depth_) return;
-                    if (!same_surface(decode_octahedral_coarse(photon.normal), vp.ng)) return;
-                    ++count;
-                    const Vec3f wi = decode_octahedral(photon.wi);
-                    const float cos_ng = abs_dot(wi, vp.ng);
-                    if (cos_ng == 0) return;
-                    SampledSpectrum f = vp.bsdf.f(vp.wo, wi, TransportMode::Radiance) * (abs_dot(wi, vp.ns) / cos_ng);
-                    SampledSpectrum contribution = f * photon.beta();
-                    // A photon and a visible point of the same group share wavelengths; if
-                    // either crossed dispersion, only the hero is valid, in the terminated
-                    // set's measure.
+                // A photon and a visible point of the same group share wavelengths; if either
+                // crossed dispersion, only the hero is valid, in the terminated set's measure.
+                auto add = [&](SampledSpectrum contribution, const StoredPhoton &photon) {
                     if (photon.secondary_terminated && !vp.lambda.secondary_terminated()) {
                         SampledWavelengths terminated = vp.lambda;
                         terminated.terminate_secondary();
@@ -412,7 +390,34 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                         for (int c = 1; c < NumWavelengths; ++c) contribution[c] = 0;
                     }
                     phi += contribution;
-                });
+                };
+                if (vp.in_medium()) {
+                    // The volumetric photon map's estimate (Jensen and Christensen 1998): the
+                    // phase function times each photon's flux, over sigma_s at the point, which
+                    // both the camera path's and the photon's throughputs hold (vcm.cpp's
+                    // merge_in_medium derives it); the final division is by the sphere's volume.
+                    const HenyeyGreenstein &phase = vp.medium->phase();
+                    medium_maps[g].for_each_within(vp.p, radius, [&](const StoredPhoton &photon) {
+                        if (photon.depth + 1 + vp.depth > max_depth_) return;
+                        ++count;
+                        add(SampledSpectrum(phase.p(vp.wo, decode_octahedral(photon.wi))) * photon.beta(), photon);
+                    });
+                    const SampledSpectrum sigma_s = vp.medium->sigma_s(vp.lambda);
+                    for (int i = 0; i < NumWavelengths; ++i) phi[i] = sigma_s[i] > 0 ? phi[i] / sigma_s[i] : 0.f;
+                } else {
+                    surface_maps[g].for_each_within(vp.p, radius, [&](const StoredPhoton &photon) {
+                        // "maxdepth" bounds the scattering vertices of the whole path, as for the
+                        // other integrators (pbrt-v4 bounds each subpath separately instead).
+                        if (photon.depth + 1 + vp.depth > max_depth_) return;
+                        if (!same_surface(decode_octahedral_coarse(photon.normal), vp.ng)) return;
+                        ++count;
+                        const Vec3f wi = decode_octahedral(photon.wi);
+                        const float cos_ng = abs_dot(wi, vp.ng);
+                        if (cos_ng == 0) return;
+                        add(vp.bsdf.f(vp.wo, wi, TransportMode::Radiance) * (abs_dot(wi, vp.ns) / cos_ng) * photon.beta(),
+                            photon);
+                    });
+                }
                 SampledSpectrum flux = vp.beta * phi;
                 if (flux.has_non_finite()) return RGB{};
                 gathered += count;
@@ -426,19 +431,17 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 PixelEstimate &estimate = estimates_[index];
                 estimate.direct_sum += state.direct;
                 const int g = groups.group_of_pixel(index);
-                // Both visible points gather within the pixel's radius, so their photons are
-                // counted together by the radius reduction.
-                RGB phi_rgb;
-                int gathered = 0;
+                // A surface visible point may have a second one below the surface; both gather
+                // within the pixel's surface radius, so their photons are counted together, as
+                // are those of all the camera path's medium vertices within its medium radius.
+                RGB surface_phi, medium_phi;
+                int surface_gathered = 0, medium_gathered = 0;
                 for (const VisiblePoint *vp : {&state.vp, &state.subsurface_vp})
-                    if (vp->bsdf) phi_rgb += gather(*vp, g, estimate.radius, gathered);
-                if (gathered == 0) return;
-                const float m = float(gathered);
-                const float n_new = estimate.photons + kGamma * m;
-                const float r_new = estimate.radius * std::sqrt(n_new / (estimate.photons + m));
-                estimate.tau = (estimate.tau + phi_rgb) * sqr(r_new / estimate.radius);
-                estimate.photons = n_new;
-                estimate.radius = r_new;
+                    if (vp->exists()) surface_phi += gather(*vp, g, estimate.surface.radius, surface_gathered);
+                for (const VisiblePoint &vp : state.medium_vps)
+                    medium_phi += gather(vp, g, estimate.medium.radius, medium_gathered);
+                if (surface_gathered > 0) estimate.surface.update(surface_phi, float(surface_gathered), 2);
+                if (medium_gathered > 0) estimate.medium.update(medium_phi, float(medium_gathered), 3);
             });
             return true;
         });
@@ -448,16 +451,18 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     // the film is only written below, so the state is still that of the completed iterations.
     if (stats.interrupted && budget.at_boundary) budget.at_boundary();
 
-    // The image: direct lighting averaged over the iterations, plus the photon estimate
-    // tau / (N_emitted pi r^2).
+    // The image: direct lighting averaged over the iterations, plus the photon estimates
+    // tau / (N_emitted |kernel|), |kernel| = pi r^2 on surfaces and 4/3 pi r^3 in media.
     if (iterations == 0) return;
     const double emitted = double(iterations) * double(photon_count);
     size_t index = 0;
     for (int y = bounds.min.y; y < bounds.max.y; ++y)
         for (int x = bounds.min.x; x < bounds.max.x; ++x, ++index) {
             const PixelEstimate &estimate = estimates_[index];
+            const float r_surface = estimate.surface.radius, r_medium = estimate.medium.radius;
             RGB value = estimate.direct_sum / float(iterations) +
-                        estimate.tau / float(emitted * Pi * sqr(estimate.radius));
+                        estimate.surface.tau / float(emitted * Pi * sqr(r_surface)) +
+                        estimate.medium.tau / float(emitted * 4 / 3 * Pi * r_medium * sqr(r_medium));
             film.add_sensor_value({x, y}, value, 1);
         }
 }

@@ -11,9 +11,10 @@
 // makes the estimate consistent: bias and variance both vanish as iterations go on.
 //
 // Participating media: camera paths scatter through media on their way to the visible point,
-// estimating single scattering at each medium vertex by light sampling, and photons scatter in
-// media and are deposited on surfaces only (see trace_camera_path in sppm.cpp for how the paths
-// are shared between the estimators).
+// estimating single scattering at each medium vertex by light sampling and gathering there, within
+// a sphere, the photons of volumetric caustics (photons deposited in media straight after
+// specular bounces); photons are deposited on surfaces after any scattering event (see
+// trace_camera_path in sppm.cpp for how the paths are shared between the estimators).
 //
 // Spectral: camera paths and photons are split into wavelength groups per iteration
 // (wavelength_groups.h); a visible point gathers only its group's photons, and each
@@ -45,16 +46,28 @@ class SPPM final : public Integrator {
     void restore_state(std::istream &in) override;
 
   private:
-    // What a pixel's estimate carries from one iteration to the next.
-    struct PixelEstimate {
+    // The progressive estimate of the light a pixel sees through visible points of one kind,
+    // on surfaces (a disk kernel, dimension 2) or in media (a sphere, dimension 3). The two are
+    // estimates of disjoint sets of paths, each averaged over every iteration (an iteration
+    // without a visible point of a kind adds nothing to its estimate), with radii of their own.
+    struct KernelEstimate {
         float radius = 0;
         float photons = 0; // N: photons the estimate is made of
-        RGB direct_sum;    // direct lighting along camera paths, summed over iterations
         RGB tau;           // accumulated, radius-scaled flux
+
+        // Keeps gamma of the m photons just gathered (flux phi) and shrinks the kernel's
+        // measure (r^dimension) in the same proportion (Hachisuka and Jensen 2009, eqs. 6-7;
+        // the volume form is Knaus and Zwicker 2011's).
+        void update(const RGB &phi, float m, int dimension);
+    };
+    // What a pixel's estimate carries from one iteration to the next.
+    struct PixelEstimate {
+        KernelEstimate surface, medium;
+        RGB direct_sum; // direct lighting along camera paths, summed over iterations
     };
 
     int max_depth_;
-    float initial_radius_;
+    float initial_radius_, initial_medium_radius_;
     long long photons_per_iteration_;
     int wavelength_groups_;
     uint64_t seed_;

@@ -52,7 +52,12 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
         throw InputError(scene.integrator_location,
                          std::string(name) + " needs a camera whose importance is modelled (perspective); "
                                              "this scene's camera has none");
-    if (base_radius_ == 0) base_radius_ = default_merge_radius(scene);
+    // A radius given in the scene is used on surfaces and in media alike.
+    base_medium_radius_ = base_radius_;
+    if (base_radius_ == 0) {
+        base_radius_ = default_merge_radius(scene);
+        base_medium_radius_ = default_medium_merge_radius(scene, base_radius_);
+    }
     // Advice only: vcm always merges, so that it renders the same image as every other
     // integrator whatever the analysis concludes.
     if (mode == Mode::VertexConnectionMerging && !scene.features.caustic_paths)
@@ -72,7 +77,7 @@ struct Iteration {
     const Scene &scene;
     int max_depth;
     bool use_vc;
-    float radius;
+    float radius, medium_radius; // of the disks that merge on surfaces, and the spheres in media
     const WavelengthGroups &groups;
     std::vector<VcmWeights> weights;       // per wavelength group
     std::vector<float> vm_normalization;   // per group: 1 / (pi r^2 N_group), merges on surfaces
@@ -173,7 +178,7 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
     const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * point.cosine(cs->wi) / dist2;
     const float bsdf_rev_pdf = v.after_jump ? 1.f : point.pdf(cs->wi, point.wo, TransportMode::Radiance);
     const MergeWeights &merge = v.after_jump ? NoMerge : ctx.w.at(point.in_medium());
-    const float w_light = mis(camera_pdf_a / ctx.it.light_paths) * (merge.vm_weight + m.d_vcm + m.d_vc * mis(bsdf_rev_pdf));
+    const float w_light = m.connected(camera_pdf_a / ctx.it.light_paths, bsdf_rev_pdf, merge);
     SampledSpectrum L = v.beta * f * cs->We * (1 / (cs->pdf * (1 + w_light)));
     if (L.is_black()) return;
     if (L.has_non_finite()) {
@@ -197,18 +202,10 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
     const Light &light = *start->light;
     const LightLeSample &les = start->les;
 
-    // Initial MIS quantities (tech. report eqs. 31-33): the emission density of the light
-    // sample against the density with which next-event estimation would pick the same point
-    // (taken, as in SmallVCM and pbrt-v4's BDPT, as the light's position density; for lights
-    // at infinity, the direction density).
     const bool at_infinity = start->at_infinity();
-    const float emission_pdf = start->pmf * les.pdf_pos * les.pdf_dir;
-    const float direct_pdf = start->pmf * (at_infinity ? les.pdf_dir : les.pdf_pos);
-    SubpathMis m;
-    m.d_vcm = mis(direct_pdf / emission_pdf);
-    // A camera path can only hit lights that are not deltas.
-    m.d_vc = is_delta_light(light.type()) ? 0.f : mis((at_infinity ? 1.f : start->cos_origin) / emission_pdf);
-    m.d_vm = m.d_vc * ctx.w.light_hit_weight;
+    SubpathMis m = SubpathMis::light_start(ctx.w, start->pmf * les.pdf_pos * les.pdf_dir,
+                                           start->pmf * (at_infinity ? les.pdf_dir : les.pdf_pos),
+                                           at_infinity ? 1.f : start->cos_origin, !is_delta_light(light.type()));
 
     // The emitted flux is kept apart from the walk's throughput so that Russian roulette sees
     // the throughput on the path tracer's scale. The path leaves the light into the medium
@@ -320,8 +317,8 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
     const float emission_pdf = chosen->pmf * e.pdf_pos * e.pdf_dir;
     const float w_light = is_delta_light(light.type()) ? 0.f : mis(scattering.pdf_forward / assumed_direct_pdf);
     const float pdf_reverse = z.after_jump ? 1.f : scattering.pdf_reverse;
-    const float w_camera = mis(emission_pdf * point.cosine(ls->wi) / (assumed_direct_pdf * cos_at_light)) *
-                           (ctx.w.at(point.in_medium()).vm_weight + z.m.d_vcm + z.m.d_vc * mis(pdf_reverse));
+    const float w_camera = z.m.connected(emission_pdf * point.cosine(ls->wi) / (assumed_direct_pdf * cos_at_light),
+                                         pdf_reverse, ctx.w.at(point.in_medium()));
     SampledSpectrum L = scattering.f * ls->L * (1 / (chosen->pmf * ls->pdf * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
     Ray shadow = ls->is_infinite ? spawn_ray(point.p, point.ng, ls->wi) : spawn_ray_between(point, ls->p_light, ls->n_light);
@@ -347,9 +344,9 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
     const MergeWeights &light_merge = v.after_jump ? NoMerge : ctx.w.at(light.in_medium());
     const float light_pdf_reverse = v.after_jump ? 1.f : at_light.pdf_reverse;
     const float camera_pdf_reverse = z.after_jump ? 1.f : at_camera.pdf_reverse;
-    const float w_light = mis(camera_dir_pdf_a) * (light_merge.vm_weight + v.d_vcm + v.d_vc * mis(light_pdf_reverse));
-    const float w_camera = mis(light_dir_pdf_a) *
-                           (ctx.w.at(camera.in_medium()).vm_weight + z.m.d_vcm + z.m.d_vc * mis(camera_pdf_reverse));
+    const SubpathMis light_m{v.d_vcm, v.d_vc, v.d_vm};
+    const float w_light = light_m.connected(camera_dir_pdf_a, light_pdf_reverse, light_merge);
+    const float w_camera = z.m.connected(light_dir_pdf_a, camera_pdf_reverse, ctx.w.at(camera.in_medium()));
     SampledSpectrum L = at_camera.f * at_light.f * v.beta * (1 / (dist2 * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
     SampledSpectrum T = transmittance(ctx.it.scene, spawn_ray_between(camera, light.p, light.ng),
@@ -371,16 +368,15 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
         const Vec3f wi = decode_octahedral(photon.wo);
         const float cos_ng = abs_dot(wi, point.ng);
         if (cos_ng == 0) return;
-        SampledSpectrum f = point.bsdf.f(point.wo, wi, TransportMode::Radiance);
-        if (f.is_black()) return;
-        const float camera_dir_pdf = point.bsdf.pdf(point.wo, wi, TransportMode::Radiance);
-        const float camera_rev_pdf = z.after_jump ? 1.f : point.bsdf.pdf(wi, point.wo, TransportMode::Importance);
-        const float w_light = photon.d_vcm * here.vc_weight + photon.d_vm * mis(camera_dir_pdf);
-        const float w_camera = z.m.d_vcm * here.vc_weight + z.m.d_vm * mis(camera_rev_pdf);
+        const BxDFEvaluation e = point.bsdf.evaluate(point.wo, wi, TransportMode::Radiance);
+        if (e.f.is_black()) return;
+        const float camera_rev_pdf = z.after_jump ? 1.f : e.pdf_reverse;
+        const float w_light = SubpathMis{photon.d_vcm, 0, photon.d_vm}.merged(e.pdf_forward, here);
+        const float w_camera = z.m.merged(camera_rev_pdf, here);
         // Photon density is flux per unit of geometric area; the shading-normal BSDF turns it
         // into radiance with |wi.ns| / |wi.ng| (the adjoint correction, Veach 1997, 5.3).
         const float shading = abs_dot(wi, point.ns) / cos_ng;
-        sum += in_group_measure(f * photon.beta() * (shading / (w_light + 1 + w_camera)),
+        sum += in_group_measure(e.f * photon.beta() * (shading / (w_light + 1 + w_camera)),
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
     });
@@ -414,14 +410,14 @@ SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex
     const MergeWeights &here = ctx.w.medium;
     const HenyeyGreenstein &phase = point.medium->phase();
     SampledSpectrum sum(0.f);
-    ctx.medium_photons.for_each_within(point.p, ctx.it.radius, [&](const Photon &photon) {
+    ctx.medium_photons.for_each_within(point.p, ctx.it.medium_radius, [&](const Photon &photon) {
         if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) return;
         const Vec3f wi = decode_octahedral(photon.wo);
         // The phase function is its own sampling density, and symmetric: it is also the density
         // with which the camera (from wo) and the light subpath (from wi) sample each other.
         const float p = phase.p(point.wo, wi);
-        const float w_light = photon.d_vcm * here.vc_weight + photon.d_vm * here.d_vm_scale * mis(p);
-        const float w_camera = z.m.d_vcm * here.vc_weight + z.m.d_vm * here.d_vm_scale * mis(p);
+        const float w_light = SubpathMis{photon.d_vcm, 0, photon.d_vm}.merged(p, here);
+        const float w_camera = z.m.merged(p, here);
         sum += in_group_measure(photon.beta() * (p / (w_light + 1 + w_camera)),
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
@@ -465,12 +461,9 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     const float hero_scale = lambda.pdf()[0] / terminated.pdf()[0];
     const CameraPathContext ctx{it, pixel, group, w, lambda, hero_scale, light_path, surface_photons, medium_photons};
 
-    // The camera generates the first vertex with its directional density, one sample per pixel
-    // of the full frame; light tracing reaches it with N light paths (eq. 31 for the camera).
     float pdf_lens, pdf_dir;
     scene.camera->pdf_we(camera_ray.ray, &pdf_lens, &pdf_dir);
-    SubpathMis m;
-    m.d_vcm = mis(it.light_paths / (pdf_dir * it.full_frame_pixels));
+    SubpathMis m = SubpathMis::camera_start(it.light_paths, pdf_dir * it.full_frame_pixels);
 
     SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, pixel.sample_scratch, pixel.rays, true);
     walk.start(camera_ray.ray, scene.camera_medium, camera_ray.weight);
@@ -497,7 +490,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                 const float pmf = scene.light_sampler->pmf(light);
                 EmissionDensities e = emission_densities(*light, walk.origin(), Vec3f{}, -wi);
                 const float direct_pdf = pmf * light->pdf_li(previous, wi);
-                const float w_camera = w.vc_enabled * mis(direct_pdf) * m.d_vcm + mis(pmf * e.pdf_pos * e.pdf_dir) * m.d_vc;
+                const float w_camera = m.hit_emitter(w, direct_pdf, pmf * e.pdf_pos * e.pdf_dir);
                 add(Le / (1 + w_camera));
             }
             break;
@@ -515,8 +508,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                 } else {
                     const float pmf = scene.light_sampler->pmf(si.area_light);
                     EmissionDensities e = emission_densities(*si.area_light, si.p, si.n, si.wo);
-                    const float w_camera = w.vc_enabled * mis(pmf * e.pdf_pos) * m.d_vcm +
-                                           mis(pmf * e.pdf_pos * e.pdf_dir) * m.d_vc;
+                    const float w_camera = m.hit_emitter(w, pmf * e.pdf_pos, pmf * e.pdf_pos * e.pdf_dir);
                     add(Le / (1 + w_camera));
                 }
             }
@@ -581,14 +573,15 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
 
     renderer.run([&](int iteration) {
         groups.start_iteration(scene, iteration, pixel_count, pixel_count);
-        const float radius = base_radius_ * std::pow(float(iteration + 1), (alpha_ - 1) / 2);
-        Iteration it{scene, max_depth_, use_vc, radius, groups, {}, {}, {},
+        const float shrink = std::pow(float(iteration + 1), (alpha_ - 1) / 2);
+        const float radius = base_radius_ * shrink, medium_radius = base_medium_radius_ * shrink;
+        Iteration it{scene, max_depth_, use_vc, radius, medium_radius, groups, {}, {}, {},
                      float(pixel_count), float(full.x) * float(full.y)};
         for (int g = 0; g < groups.count(); ++g) {
             const float light_path_count = float(std::max<size_t>(groups.light_path_count(g), 1));
             // The kernels' acceptance regions times the light paths gathered (vcm_mis.h).
             const float eta_vcm = Pi * radius * radius * light_path_count;
-            const float eta_volume = 4.f / 3.f * Pi * radius * radius * radius * light_path_count;
+            const float eta_volume = 4.f / 3.f * Pi * medium_radius * medium_radius * medium_radius * light_path_count;
             it.weights.push_back(VcmWeights::make(use_vc, true, eta_vcm, eta_volume));
             it.vm_normalization.push_back(1 / eta_vcm);
             it.volume_normalization.push_back(1 / eta_volume);
@@ -622,7 +615,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         // they kept the second thread idle for a tenth of the render).
         tbb::parallel_for(0, groups.count(), [&](int g) {
             surface_photons[g].build(radius);
-            medium_photons[g].build(radius);
+            medium_photons[g].build(medium_radius);
         });
         uint64_t stored = 0;
         if (keep_light_vertices)

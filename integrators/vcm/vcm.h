@@ -37,7 +37,8 @@ class VCM final : public Integrator {
     enum class Mode { VertexConnectionMerging, BidirectionalPhotonMapping };
 
     // Parameters: "maxdepth" (5), the most scattering events of a path; "radius" (0:
-    // default_merge_radius()), the initial merge radius r_0 in scene units;
+    // default_merge_radius() on surfaces, default_medium_merge_radius() in media), the initial
+    // merge radius r_0 in scene units;
     // "alpha" (0.75), the radius reduction exponent; "wavelengthgroups" (16), the wavelength
     // groups per iteration; "photonsearch" ("hashgrid" or "flann"), the range search;
     // "lightvertices" ("store" or "retrace", see below).
@@ -49,7 +50,7 @@ class VCM final : public Integrator {
   private:
     Mode mode_;
     int max_depth_;
-    float base_radius_;
+    float base_radius_, base_medium_radius_;
     float alpha_;
     int wavelength_groups_;
     PhotonSearch photon_search_;

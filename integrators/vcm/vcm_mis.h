@@ -85,6 +85,30 @@ struct VcmWeights {
 struct SubpathMis {
     float d_vcm = 0, d_vc = 0, d_vm = 0;
 
+    // A light subpath leaves its light (tech. report eqs. 31-33): emission_pdf, the density of the
+    // emitted ray (light choice, position and direction); direct_pdf, the density with which
+    // light sampling would pick the same point (as in SmallVCM and pbrt-v4's BDPT, light choice
+    // times position density; for lights at infinity, the direction density); cos_light, the
+    // cosine of the ray with the light's surface (1 at infinity); hittable, whether a camera path
+    // can reach the light (not a delta light).
+    static SubpathMis light_start(const VcmWeights &w, float emission_pdf, float direct_pdf, float cos_light,
+                                  bool hittable) {
+        SubpathMis m;
+        m.d_vcm = mis(direct_pdf / emission_pdf);
+        m.d_vc = hittable ? mis(cos_light / emission_pdf) : 0.f;
+        m.d_vm = m.d_vc * w.light_hit_weight;
+        return m;
+    }
+
+    // A camera subpath leaves the lens with the directional density camera_pdf, one sample per
+    // pixel of the full frame, while light tracing reaches the lens with light_paths paths (eq.
+    // 31 for the camera).
+    static SubpathMis camera_start(float light_paths, float camera_pdf) {
+        SubpathMis m;
+        m.d_vcm = mis(light_paths / camera_pdf);
+        return m;
+    }
+
     // A new vertex was reached at distance^2 dist2 (pass 1 where the previous vertex is at
     // infinity: no distance conversion) and its geometric normal makes cosine cos_in with the
     // incoming segment.
@@ -111,6 +135,33 @@ struct SubpathMis {
         d_vc = g * (d_vc * mis(pdf_rev) + w.vc_enabled * d_vcm + here.vm_weight);
         d_vm = g * (d_vm * mis(pdf_rev) + d_vcm * w.surface.vc_weight + here.merge_ratio);
         d_vcm = mis(1 / pdf_dir);
+    }
+
+    // The strategies that complete a path at this subpath's last vertex are weighed against each
+    // other by three sums, each over the strategies that would have produced more of the path
+    // from the other end; a strategy's weight is 1 / (1 + the light subpath's sum + the camera
+    // subpath's sum) (tech. report eqs. 40-44). here: the merge weights of the last vertex.
+
+    // A connection (or light sampling, or light tracing) joins this subpath's last vertex to the
+    // other end: pdf_a, the density, in the area measure at this vertex, with which the other end
+    // samples it; pdf_rev, the density with which this vertex samples its predecessor from the
+    // direction of the other end (tech. report eq. 40).
+    float connected(float pdf_a, float pdf_rev, const MergeWeights &here) const {
+        return mis(pdf_a) * (here.vm_weight + d_vcm + d_vc * mis(pdf_rev));
+    }
+
+    // This vertex is merged with a vertex of the other subpath: pdf_rev, the density with which
+    // the other subpath's scattering function there samples this subpath's predecessor (eqs.
+    // 42-43, with d_vm rescaled from its surface reference, see MergeWeights).
+    float merged(float pdf_rev, const MergeWeights &here) const {
+        return d_vcm * here.vc_weight + d_vm * here.d_vm_scale * mis(pdf_rev);
+    }
+
+    // This camera subpath has reached an emitter: direct_pdf, the density with which light
+    // sampling would have chosen the point (area measure, or solid angle at infinity);
+    // emission_pdf, the density of emitting the path's last segment from it (eq. 44).
+    float hit_emitter(const VcmWeights &w, float direct_pdf, float emission_pdf) const {
+        return w.vc_enabled * mis(direct_pdf) * d_vcm + mis(emission_pdf) * d_vc;
     }
 
     // The subpath jumps through a profile solid from its entry to its exit (see above): scatter

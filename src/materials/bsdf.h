@@ -39,6 +39,16 @@ class BSDF {
         return bxdf_->pdf(wo, wi, mode, sample_flags);
     }
 
+    // f(wo, wi) and the densities of sampling wi from wo (in mode) and wo from wi (in the adjoint
+    // mode), with one change of frame and one call into the BxDF.
+    BxDFEvaluation evaluate(Vec3f wo_world, Vec3f wi_world, TransportMode mode = TransportMode::Radiance) const {
+        Vec3f wo = to_local(wo_world), wi = to_local(wi_world);
+        if (wo.z == 0) return {};
+        BxDFEvaluation e = bxdf_->evaluate(wo, wi, mode);
+        if (wi.z == 0) e.pdf_reverse = 0;
+        return e;
+    }
+
   private:
     Frame frame_;
     const BxDF *bxdf_ = nullptr;

@@ -67,6 +67,14 @@ struct BSDFSample {
     bool is_specular() const { return caustica::is_specular(flags); }
 };
 
+// What a connection or a merge needs of a scattering function at once: its value for (wo, wi),
+// the density of sampling wi from wo in the path's transport mode, and that of sampling wo from
+// wi in the adjoint mode (the other subpath's direction).
+struct BxDFEvaluation {
+    SampledSpectrum f;
+    float pdf_forward = 0, pdf_reverse = 0;
+};
+
 class BxDF {
   public:
     // Value of the BxDF for the pair (wo, wi), both in the local frame, pointing away from the
@@ -79,6 +87,11 @@ class BxDF {
     virtual float pdf(Vec3f wo, Vec3f wi, TransportMode mode,
                       SampleFlags flags = SampleFlags::All) const = 0;
     virtual BxDFFlags flags() const = 0;
+    // f and both densities in one call, for BxDFs that share work between them (the default
+    // makes the three calls).
+    virtual BxDFEvaluation evaluate(Vec3f wo, Vec3f wi, TransportMode mode) const {
+        return {f(wo, wi, mode), pdf(wo, wi, mode), pdf(wi, wo, adjoint(mode))};
+    }
 
   protected:
     // BxDFs live in a ScratchBuffer and are never destroyed through a base pointer.

@@ -38,6 +38,10 @@ class DiffuseBxDF final : public BxDF {
         return cosine_hemisphere_pdf(std::abs(wi.z));
     }
     BxDFFlags flags() const override { return r_.is_black() ? BxDFUnset : BxDFDiffuseReflection; }
+    BxDFEvaluation evaluate(Vec3f wo, Vec3f wi, TransportMode) const override {
+        if (!same_hemisphere(wo, wi) || r_.is_black()) return {};
+        return {r_ * InvPi, cosine_hemisphere_pdf(std::abs(wi.z)), cosine_hemisphere_pdf(std::abs(wo.z))};
+    }
 
   private:
     SampledSpectrum r_;

@@ -3,6 +3,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -130,6 +131,49 @@ inline std::vector<BlockEstimate> block_estimates(const RgbImage &a, const RgbIm
                 blocks.push_back(e);
             }
     return blocks;
+}
+
+// The correlation factor k of an image pair: the average over its block-channels of the
+// block-level variance estimate over the per-pixel one, at least 1. Splats (light tracing,
+// connections to the lens) and merges (photons shared by neighbouring pixels, wavelength groups
+// shared across the image) correlate neighbouring pixels' errors, which the per-pixel estimate
+// ignores; each term is k times a one-degree-of-freedom chi-square over its mean, so the average
+// of n terms is within about sqrt(2 / n) of k.
+inline double correlation_factor(const std::vector<BlockEstimate> &blocks) {
+    double sum = 0;
+    int count = 0;
+    for (const BlockEstimate &e : blocks)
+        if (e.variance_from_pixels > 0) {
+            sum += e.variance_from_blocks / e.variance_from_pixels;
+            ++count;
+        }
+    return count > 0 ? std::max(1.0, sum / count) : 1.0;
+}
+
+// The mean over all pixels and channels of (A + B) / 2.
+inline double image_mean(const RgbImage &a, const RgbImage &b) {
+    double sum = 0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) sum += (a.rgb[i] + b.rgb[i]) / 2;
+    return sum / double(a.rgb.size());
+}
+
+// Two renders of one scene by one integrator with seeds seed and seed + 1, into dir;
+// environment (e.g. "CAUSTICA_TEST_FAULT=...") is set for the command.
+struct RenderPair {
+    RgbImage runs[2];
+};
+
+inline RenderPair render_pair(const std::string &scene_path, const std::string &integrator, int spp, int seed,
+                              const std::string &dir, const std::string &environment = "") {
+    RenderPair pair;
+    for (int i = 0; i < 2; ++i) {
+        const std::string out = dir + "/run" + std::to_string(i) + ".exr";
+        const std::string args = "render " + scene_path + " --quiet --integrator " + integrator + " --spp " +
+                                 std::to_string(spp) + " --seed " + std::to_string(seed + i) + " -o " + out;
+        if (run_caustica(args, "", environment) != 0) throw std::runtime_error("caustica " + args + " failed");
+        pair.runs[i] = read_rgb(out);
+    }
+    return pair;
 }
 
 } // namespace caustica::testing

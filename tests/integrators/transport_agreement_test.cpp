@@ -62,15 +62,8 @@ Agreement check_agreement(const AgreementCase &c, const std::string &fault = "")
     const std::string dir = scratch_dir(std::string("agreement-") + c.scene + "-" + c.integrator +
                                         (fault.empty() ? "" : "-" + fault));
     const std::string environment = fault.empty() ? "" : "CAUSTICA_TEST_FAULT=" + fault;
-    RgbImage runs[2];
-    for (int i = 0; i < 2; ++i) {
-        const std::string out = dir + "/run" + std::to_string(i) + ".exr";
-        const std::string args = "render " + scene_path(c.scene) + " --quiet --integrator " + c.integrator +
-                                 " --spp " + std::to_string(c.spp) + " --seed " + std::to_string(11 + i) +
-                                 " -o " + out;
-        EXPECT_EQ(run_caustica(args, "", environment), 0) << args;
-        runs[i] = read_rgb(out);
-    }
+    const RenderPair pair = render_pair(scene_path(c.scene), c.integrator, c.spp, 11, dir, environment);
+    const RgbImage(&runs)[2] = pair.runs;
     const RgbImage reference = read_rgb(reference_path(c.scene));
     const RgbImage reference_variance = read_layer(reference_path(c.scene), "variance");
     EXPECT_EQ(runs[0].width, reference.width);
@@ -86,14 +79,7 @@ Agreement check_agreement(const AgreementCase &c, const std::string &fault = "")
 
     const int block = 16;
     const std::vector<BlockEstimate> blocks = block_estimates(runs[0], runs[1], block);
-    double ratio_sum = 0;
-    int ratio_count = 0;
-    for (const BlockEstimate &e : blocks)
-        if (e.variance_from_pixels > 0) {
-            ratio_sum += e.variance_from_blocks / e.variance_from_pixels;
-            ++ratio_count;
-        }
-    result.k = ratio_count > 0 ? std::max(1.0, ratio_sum / ratio_count) : 1.0;
+    result.k = correlation_factor(blocks);
     size_t i = 0;
     for (int by = 0; by + block <= reference.height; by += block)
         for (int bx = 0; bx + block <= reference.width; bx += block)
