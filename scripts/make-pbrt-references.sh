@@ -5,7 +5,8 @@
 # and oiiotool, and takes about half an hour on 2 cores.
 #
 # Each scene is rendered twice by pbrt-v4 with the integrator its file names (volpath in media,
-# lightpath where only light paths reach the pixels, bdpt on surfaces), with different seeds. The
+# bdpt or path on surfaces; never lightpath, which ignores participating media), with different
+# seeds. The
 # stored EXR holds their mean as R, G, B and half their difference as difference.R/G/B: the test
 # can estimate the reference's own variance from it exactly as it does its renders' (per pixel,
 # and per block for the correlation that splatting brings).
@@ -20,14 +21,14 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 # scene  samples per run
-table="fog-point 4096
+table="fog-point 16384
 fog-spot 4096
 fog-small-area 4096
 fog-large-area 4096
-fog-caustic 8192
+fog-caustic 32768
 chromatic-fog 4096
 fog-box-spot 4096
-milky-glass 4096
+milky-glass 32768
 light-in-glass 4096
 underwater-point 4096
 narrow-line 4096
