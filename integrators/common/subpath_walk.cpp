@@ -8,9 +8,15 @@
 
 namespace caustica {
 
+namespace {
+
+// The cosine that goes with a direction wi sampled at si from wo: |wi . ns| for radiance, the
+// adjoint-corrected importance_cosine for importance.
 float scattering_cosine(TransportMode mode, const SurfaceInteraction &si, Vec3f wo, Vec3f wi) {
     return mode == TransportMode::Radiance ? abs_dot(wi, si.shading.n) : importance_cosine(si, wo, wi);
 }
+
+} // namespace
 
 SubpathWalk::SubpathWalk(const Scene &scene, TransportMode mode, SampledWavelengths &lambda, Sampler &sampler,
                          ScratchBuffer &bsdf_memory, uint64_t &rays, bool reverse_densities)
@@ -64,7 +70,7 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
         const PhaseSample ps = medium_->phase().sample_p(point_.wo, sampler_.get_2d());
         if (!(ps.p > 0)) return std::nullopt;
         s.wi = ps.wi;
-        s.pdf_fwd = s.pdf_rev = s.sample_pdf = ps.p;
+        s.pdf_fwd = s.pdf_rev = ps.p;
         ray_ = Ray{point_.p, ps.wi, Infinity};
         return s;
     }
@@ -81,7 +87,6 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
         for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
     }
     s.wi = bs->wi;
-    s.sample_pdf = bs->pdf;
     s.pdf_fwd = bs->pdf_is_proportional ? bsdf.pdf(wo, bs->wi, mode_) : bs->pdf;
     if (reverse_densities_) s.pdf_rev = bsdf.pdf(bs->wi, wo, adjoint(mode_));
     s.cos_out = abs_dot(si_.n, bs->wi);
@@ -93,7 +98,7 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
     }
     if (bs->is_transmission()) {
         // Radiance is scaled by 1/eta^2 at a refraction, importance is not (Veach 1997, 5.2).
-        if (mode_ == TransportMode::Radiance) eta_scale *= sqr(bs->eta);
+        if (mode_ == TransportMode::Radiance) eta_scale_ *= sqr(bs->eta);
         if (si_.material->has_interior_absorption())
             absorbing_interior_ = dot(bs->wi, si_.n) < 0 ? si_.material : nullptr;
     }
@@ -114,7 +119,7 @@ bool SubpathWalk::jump(const DisneyMaterial &profile) {
 }
 
 bool SubpathWalk::russian_roulette(int depth) {
-    const SampledSpectrum rr_beta = beta * eta_scale;
+    const SampledSpectrum rr_beta = beta * eta_scale_;
     if (rr_beta.max_value() < 1 && depth > 1) {
         const float q = std::max(0.f, 1 - rr_beta.max_value());
         if (sampler_.get_1d() < q) return false;

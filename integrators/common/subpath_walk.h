@@ -63,7 +63,6 @@ struct WalkScatter {
     // the direction the path arrived from, starting from wi, in the adjoint mode. Medium vertices:
     // the phase function's value, both ways (it is sampled exactly, and symmetric).
     float pdf_fwd = 0, pdf_rev = 0;
-    float sample_pdf = 0;     // the density the sample's weight was divided by
     float cos_out = 1;        // |wi . ng|, the area conversion at this end; 1 in a medium
     bool specular = false;    // a delta lobe: the densities are deltas, equal both ways
     // The sample enters a profile-subsurface solid: the path has not moved, and the integrator
@@ -114,8 +113,6 @@ class SubpathWalk {
     const Ray &ray() const { return ray_; }
     const Medium *medium() const { return medium_; }
     SampledSpectrum beta;
-    // Product of eta^2 over the radiance-mode refractions (1 for importance).
-    float eta_scale = 1;
 
   private:
     void leave(const SurfaceInteraction &from, Vec3f wi);
@@ -136,10 +133,8 @@ class SubpathWalk {
     ScatteringPoint point_;
     Vec3f previous_p_;
     bool after_jump_ = false;
+    // Product of eta^2 over the radiance-mode refractions (1 for importance).
+    float eta_scale_ = 1;
 };
-
-// The cosine that goes with a direction wi sampled at si from wo: |wi . ns| for radiance, the
-// adjoint-corrected importance_cosine for importance.
-float scattering_cosine(TransportMode mode, const SurfaceInteraction &si, Vec3f wo, Vec3f wi);
 
 } // namespace caustica

@@ -37,11 +37,7 @@ using namespace caustica::testing;
 
 namespace {
 
-struct HardCase {
-    const char *scene;
-    const char *integrator;
-    int spp;
-};
+using HardCase = RenderCase;
 
 struct Agreement {
     double mean_relative_error = 0;

@@ -157,6 +157,14 @@ inline double image_mean(const RgbImage &a, const RgbImage &b) {
     return sum / double(a.rgb.size());
 }
 
+// One scene rendered by one integrator at spp samples per pixel (iterations for lt, sppm, bpm and
+// vcm): a case of the agreement suites.
+struct RenderCase {
+    const char *scene;
+    const char *integrator;
+    int spp;
+};
+
 // Two renders of one scene by one integrator with seeds seed and seed + 1, into dir;
 // environment (e.g. "CAUSTICA_TEST_FAULT=...") is set for the command.
 struct RenderPair {

@@ -38,11 +38,7 @@ using namespace caustica::testing;
 
 namespace {
 
-struct AgreementCase {
-    const char *scene;
-    const char *integrator;
-    int spp;
-};
+using AgreementCase = RenderCase;
 
 struct Agreement {
     double mean_relative_error = 0;
