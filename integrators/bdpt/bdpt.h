@@ -7,7 +7,7 @@
 // weights computed from per-vertex area densities (Veach 1997, section 10.2.1).
 //
 // Participating media (pbrt-v4's BDPT with media): both subpaths sample free-flight distances
-// along their segments (traverse_segment) and may scatter inside a medium, making medium
+// along their segments (the shared SubpathWalk) and may scatter inside a medium, making medium
 // vertices, which connect like surface vertices with the phase function in place of the BSDF and
 // no cosine. Every connection, to the lens and to a sampled light point included, is weighted by
 // the transmittance of the media it crosses, and is zero when a surface blocks it.

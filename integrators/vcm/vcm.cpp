@@ -582,7 +582,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             // The kernels' acceptance regions times the light paths gathered (vcm_mis.h).
             const float eta_vcm = Pi * radius * radius * light_path_count;
             const float eta_volume = 4.f / 3.f * Pi * medium_radius * medium_radius * medium_radius * light_path_count;
-            it.weights.push_back(VcmWeights::make(use_vc, true, eta_vcm, eta_volume));
+            it.weights.push_back(VcmWeights::make(use_vc, eta_vcm, eta_volume));
             it.vm_normalization.push_back(1 / eta_vcm);
             it.volume_normalization.push_back(1 / eta_volume);
         }

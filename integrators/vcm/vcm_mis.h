@@ -23,8 +23,8 @@
 // vertex along a segment, so photons are not kept at light subpaths' exits: x_j (the light's
 // entry, the camera's exit) can be merged at, x_j+1 cannot. Every other strategy counts.
 //
-// The strategy families can be switched off (bpm has no connections; vcm has both): a disabled
-// family's terms are removed from every sum, so the remaining weights still sum to one.
+// Connections can be switched off (bpm has none; vcm has both families): their terms are then
+// removed from every sum, so the remaining weights still sum to one.
 #pragma once
 
 namespace caustica {
@@ -62,22 +62,22 @@ struct VcmWeights {
     MergeWeights surface, medium;
     float vc_enabled = 0;     // 1 when connecting is on (it weighs the connection terms of d_vc)
     // mis(1 / eta_surface): a camera path hitting the light, relative to a surface merge (d_vm's
-    // reference). That strategy exists whatever the families, so unlike the vc_weights it is
-    // not switched off with them.
+    // reference). That strategy exists with or without connections.
     float light_hit_weight = 0;
 
     const MergeWeights &at(bool in_medium) const { return in_medium ? medium : surface; }
 
-    static VcmWeights make(bool use_vc, bool use_vm, float eta_surface, float eta_medium) {
+    // Merging is always on (bpm and vcm both merge); use_vc: connections too (vcm).
+    static VcmWeights make(bool use_vc, float eta_surface, float eta_medium) {
         VcmWeights w;
-        w.surface.vm_weight = use_vm ? mis(eta_surface) : 0.f;
+        w.surface.vm_weight = mis(eta_surface);
         w.surface.vc_weight = use_vc ? mis(1 / eta_surface) : 0.f;
-        w.medium.vm_weight = use_vm ? mis(eta_medium) : 0.f;
+        w.medium.vm_weight = mis(eta_medium);
         w.medium.vc_weight = use_vc ? mis(1 / eta_medium) : 0.f;
         w.medium.merge_ratio = mis(eta_medium / eta_surface);
         w.medium.d_vm_scale = mis(eta_surface / eta_medium);
         w.vc_enabled = use_vc ? 1.f : 0.f;
-        w.light_hit_weight = use_vm ? mis(1 / eta_surface) : 0.f;
+        w.light_hit_weight = mis(1 / eta_surface);
         return w;
     }
 };

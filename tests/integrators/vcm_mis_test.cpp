@@ -170,7 +170,7 @@ std::vector<Strategy> strategies(const SyntheticPath &path, const VcmWeights &w,
 // The per-iteration constants, as VCM::render makes them (merging always on).
 VcmWeights weights_for(const SyntheticPath &path, bool use_vc) {
     const float r = path.radius;
-    return VcmWeights::make(use_vc, true, path.light_paths * Pi * r * r, path.light_paths * 4.f / 3.f * Pi * r * r * r);
+    return VcmWeights::make(use_vc, path.light_paths * Pi * r * r, path.light_paths * 4.f / 3.f * Pi * r * r * r);
 }
 
 // The largest relative difference between the recursion's weights and the explicit power
