@@ -132,12 +132,7 @@ const HardCase kCases[] = {
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, HardTransport, ::testing::ValuesIn(kCases),
-                         [](const ::testing::TestParamInfo<HardCase> &info) {
-                             std::string name = std::string(info.param.scene) + "_" + info.param.integrator;
-                             for (char &ch : name)
-                                 if (ch == '-') ch = '_';
-                             return name;
-                         });
+                         [](const ::testing::TestParamInfo<HardCase> &info) { return case_name(info.param); });
 
 // The power of the suite: a 3% bias injected into one integrator fails its check. One case per
 // integrator, on a scene where its render is in the suite.

@@ -165,6 +165,14 @@ struct RenderCase {
     int spp;
 };
 
+// A gtest name for a case: scene_integrator, with the scene's dashes made underscores.
+inline std::string case_name(const RenderCase &c) {
+    std::string name = std::string(c.scene) + "_" + c.integrator;
+    for (char &ch : name)
+        if (ch == '-') ch = '_';
+    return name;
+}
+
 // Two renders of one scene by one integrator with seeds seed and seed + 1, into dir;
 // environment (e.g. "CAUSTICA_TEST_FAULT=...") is set for the command.
 struct RenderPair {

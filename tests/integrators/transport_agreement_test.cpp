@@ -130,12 +130,7 @@ const AgreementCase kCases[] = {
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, TransportAgreement, ::testing::ValuesIn(kCases),
-                         [](const ::testing::TestParamInfo<AgreementCase> &info) {
-                             std::string name = std::string(info.param.scene) + "_" + info.param.integrator;
-                             for (char &ch : name)
-                                 if (ch == '-') ch = '_';
-                             return name;
-                         });
+                         [](const ::testing::TestParamInfo<AgreementCase> &info) { return case_name(info.param); });
 
 // The negative control. Under water, light crosses the surface once: dropping 1/eta^2 from
 // radiance leaves the path tracer's floor 1.77 times too dark, and applying it to importance
