@@ -9,14 +9,6 @@
 
 namespace caustica {
 
-namespace {
-
-// Fixed-point unit of the splat sums (see film.h).
-constexpr double kSplatUnit = 0x1p-28;
-constexpr double kSplatLimit = 0x1p62;  // largest single contribution, in units
-
-} // namespace
-
 Film::Film(Vec2i full_resolution, PixelBounds pixel_bounds, std::unique_ptr<Filter> filter,
            const RGBColorSpace &output, const PixelSensor &sensor, float max_component_value,
            std::string filename, bool save_fp16)
@@ -24,10 +16,16 @@ Film::Film(Vec2i full_resolution, PixelBounds pixel_bounds, std::unique_ptr<Filt
       filter_integral_(filter_->integral()), output_(&output), sensor_(sensor),
       output_from_sensor_(output.rgb_from_xyz_matrix() * sensor.xyz_from_sensor_rgb()),
       max_component_value_(max_component_value), filename_(std::move(filename)),
-      save_fp16_(save_fp16), pixels_(size_t(pixel_bounds.width()) * pixel_bounds.height()),
-      restored_splats_(pixels_.size() * 3),
-      thread_splats_([count = pixels_.size() * 3] { return std::vector<int64_t>(count, 0); }) {
+      save_fp16_(save_fp16), splats_(pixel_bounds.min, pixel_bounds.max, *filter_) {
     if (pixel_bounds_.empty()) throw std::invalid_argument("film: empty pixel bounds");
+}
+
+// Allocated once; a store restored from a checkpoint is already there.
+Film::Pixel *Film::camera_pixels() {
+    std::call_once(pixels_allocated_, [this] {
+        if (pixels_.empty()) pixels_.resize(pixel_count());
+    });
+    return pixels_.data();
 }
 
 FilmExtent Film::extent() const {
@@ -71,7 +69,7 @@ void Film::add_sensor_value(Vec2i pixel, RGB v, float filter_weight) {
     // Outside a crop window there is no storage: dropping the sample keeps a caller that
     // iterates the full frame from corrupting memory in release builds.
     if (!pixel_bounds_.contains(pixel)) return;
-    Pixel &p = pixels_[index(pixel)];
+    Pixel &p = camera_pixels()[index(pixel)];
     for (int c = 0; c < 3; ++c) p.rgb_sum[c] += double(filter_weight) * v[c];
     p.weight_sum += filter_weight;
     if (!moments_.empty()) {
@@ -87,65 +85,28 @@ void Film::add_sensor_value(Vec2i pixel, RGB v, float filter_weight) {
 
 void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda) {
     assert(!L.has_non_finite());
-    if (!std::isfinite(p_raster.x) || !std::isfinite(p_raster.y)) return;
-    RGB v = sensor_value(L, lambda);
-    // The pixels whose centres lie within the filter's radius of p.
-    Vec2f r = filter_->radius();
-    Vec2f discrete{p_raster.x + 0.5f, p_raster.y + 0.5f};
-    int x0 = std::max(pixel_bounds_.min.x, int(std::floor(discrete.x - r.x)));
-    int y0 = std::max(pixel_bounds_.min.y, int(std::floor(discrete.y - r.y)));
-    int x1 = std::min(pixel_bounds_.max.x, int(std::floor(discrete.x + r.x)) + 1);
-    int y1 = std::min(pixel_bounds_.max.y, int(std::floor(discrete.y + r.y)) + 1);
-    if (x0 >= x1 || y0 >= y1) return;
-    // The filter is separable: one weight per column and one per row (at most 2 r + 2 each).
-    constexpr int MaxFootprint = 2 * int(MaxFilterRadius) + 2;
-    float weight_x[MaxFootprint], weight_y[MaxFootprint];
-    for (int x = x0; x < x1; ++x) weight_x[x - x0] = filter_->evaluate_x(p_raster.x - x - 0.5f);
-    for (int y = y0; y < y1; ++y) weight_y[y - y0] = filter_->evaluate_y(p_raster.y - y - 0.5f);
-    double units_per_weight[3];
-    for (int c = 0; c < 3; ++c) units_per_weight[c] = double(v[c]) / kSplatUnit;
-    std::vector<int64_t> &splats = thread_splats_.local();
-    for (int y = y0; y < y1; ++y) {
-        if (weight_y[y - y0] == 0) continue;
-        for (int x = x0; x < x1; ++x) {
-            float w = weight_x[x - x0] * weight_y[y - y0];
-            if (w == 0) continue;
-            int64_t *sum = &splats[index({x, y}) * 3];
-            for (int c = 0; c < 3; ++c) {
-                double units = std::nearbyint(double(w) * units_per_weight[c]);
-                if (std::abs(units) > kSplatLimit) {
-                    splat_overflow_ = true;
-                    units = std::copysign(kSplatLimit, units);
-                }
-                if (__builtin_add_overflow(sum[c], int64_t(units), &sum[c])) splat_overflow_ = true;
-            }
-        }
-    }
-}
-
-std::vector<int64_t> Film::splat_sums() const {
-    std::vector<int64_t> sums = restored_splats_;
-    for (const std::vector<int64_t> &splats : thread_splats_)
-        for (size_t i = 0; i < sums.size(); ++i)
-            if (__builtin_add_overflow(sums[i], splats[i], &sums[i])) splat_overflow_ = true;
-    return sums;
+    splats_.add(p_raster, sensor_value(L, lambda));
 }
 
 Image Film::get_image(double splat_scale) const {
-    const std::vector<int64_t> splats = splat_sums();
+    splats_.flush();
+    const std::vector<int64_t> &splats = splats_.sums();
     Image image(pixel_bounds_.width(), pixel_bounds_.height());
     image.origin = pixel_bounds_.min;
     image.full_resolution = full_resolution_;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
             size_t i = size_t(y) * image.width + x;
-            const Pixel &p = pixels_[i];
-            double sensor[3];
-            for (int c = 0; c < 3; ++c) {
-                sensor[c] = p.weight_sum != 0 ? p.rgb_sum[c] / p.weight_sum : 0;
-                double splat = double(splats[i * 3 + c]) * kSplatUnit;
-                sensor[c] += splat_scale * splat / filter_integral_;
+            double sensor[3] = {0, 0, 0};
+            if (!pixels_.empty()) {
+                const Pixel &p = pixels_[i];
+                for (int c = 0; c < 3; ++c) sensor[c] = p.weight_sum != 0 ? p.rgb_sum[c] / p.weight_sum : 0;
             }
+            if (!splats.empty())
+                for (int c = 0; c < 3; ++c) {
+                    double splat = double(splats[i * 3 + c]) * SplatBuffer::kUnit;
+                    sensor[c] += splat_scale * splat / filter_integral_;
+                }
             RGB v{float(sensor[0]), float(sensor[1]), float(sensor[2])};
             if (!monochromatic_) v = output_from_sensor_ * v;
             for (int c = 0; c < 3; ++c) image.at(x, y, c) = v[c];
@@ -163,7 +124,7 @@ Image Film::get_image(double splat_scale) const {
         }
         image.layers.push_back(std::move(variance));
     }
-    if (splat_overflow_.exchange(false))
+    if (splats_.take_overflow())
         warning("light-tracing contributions exceeded the film's fixed-point range; the image "
                 "is wrong where they landed");
     return image;
@@ -184,11 +145,14 @@ template <typename T> void write_array(std::ostream &out, const std::vector<T> &
     out.write(reinterpret_cast<const char *>(values.data()), std::streamsize(values.size() * sizeof(T)));
 }
 
-// Reads an array that must hold `count` elements.
-template <typename T> void read_array(std::istream &in, std::vector<T> &values, size_t count) {
-    if (read_u64(in) != count || !in) throw std::runtime_error("film state: wrong pixel count");
-    values.resize(count);
-    in.read(reinterpret_cast<char *>(values.data()), std::streamsize(count * sizeof(T)));
+// Reads an array that must hold `count` elements, or none if `may_be_empty` (a store that was
+// never written).
+template <typename T>
+void read_array(std::istream &in, std::vector<T> &values, size_t count, bool may_be_empty = false) {
+    const uint64_t stored = read_u64(in);
+    if ((stored != count && !(may_be_empty && stored == 0)) || !in) throw std::runtime_error("film state: wrong pixel count");
+    values.resize(stored);
+    in.read(reinterpret_cast<char *>(values.data()), std::streamsize(stored * sizeof(T)));
     if (!in) throw std::runtime_error("film state: truncated");
 }
 
@@ -197,24 +161,26 @@ template <typename T> void read_array(std::istream &in, std::vector<T> &values, 
 void Film::save_state(std::ostream &out) const {
     write_array(out, pixels_);
     write_array(out, moments_);
-    write_array(out, splat_sums());
-    write_u64(out, splat_overflow_.load() ? 1 : 0);
+    splats_.flush();
+    write_array(out, splats_.sums());
+    write_u64(out, splats_.overflowed() ? 1 : 0);
 }
 
 void Film::restore_state(std::istream &in) {
     std::vector<Pixel> pixels;
-    read_array(in, pixels, pixels_.size());
+    read_array(in, pixels, pixel_count(), true);
     std::vector<Moments> moments;
     read_array(in, moments, moments_.size());
     std::vector<int64_t> splats;
-    read_array(in, splats, restored_splats_.size());
+    read_array(in, splats, pixel_count() * 3, true);
     const uint64_t overflow = read_u64(in);
     if (!in || overflow > 1) throw std::runtime_error("film state: truncated");
+    // A store the film has allocated keeps its size: camera_pixels() hands out its address.
+    if (pixels.empty() && !pixels_.empty()) pixels.assign(pixels_.size(), Pixel{});
     pixels_ = std::move(pixels);
     moments_ = std::move(moments);
-    restored_splats_ = std::move(splats);
-    thread_splats_.clear();
-    splat_overflow_ = overflow != 0;
+    splats_.restore(std::move(splats));
+    splats_.set_overflow(overflow != 0);
 }
 
 CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter) {

@@ -5,16 +5,13 @@
 // by different threads, so add_sample needs no locking: each pixel is only ever written by the
 // thread rendering its tile, and its samples arrive in a fixed order.
 //
-// Light-tracing contributions (add_splat) can land anywhere, from any thread. They are summed
-// in 64-bit fixed point (2^-28 units): integer addition is associative, so the result is
-// identical whatever the order of the additions, and therefore independent of the number of
-// threads for a given seed (floating-point sums would not be). Each thread adds into its own
-// buffer (3 x 8 bytes per pixel, allocated at its first splat), summed when the image or a
-// checkpoint is made: shared atomic adds made the splatting integrators' two-thread times vary
-// by a quarter from run to run, as both cores fought over the same cache lines. The unit is
-// small enough that rounding is ~1e-8 of a typical contribution, and the range (±3.4e10 per
-// pixel and channel) is far above any pixel value times any realistic sample count; exceeding
-// it is detected and reported when the image is made.
+// Light-tracing contributions (add_splat) can land anywhere, from any thread: SplatBuffer
+// (splat_buffer.h) sums them exactly, so that the image does not depend on the number of
+// threads, in memory that does not grow with it.
+//
+// Each store is allocated when it is first written (a checkpoint restores it as it was): a
+// light tracer never adds camera samples, and a path tracer never splats, so each needs only
+// its own.
 //
 // Values are kept in the sensor's space (XYZ for the CIE 1931 sensor) as pbrt-v4 does, and
 // converted to the output colour space's linear RGB when the image is made.
@@ -26,14 +23,14 @@
 #include "film/image.h"
 #include "film/image_io.h"
 #include "film/pixel_sensor.h"
+#include "film/splat_buffer.h"
 #include "params/parameters.h"
 #include "sampler/sampler.h"
-
-#include <tbb/enumerable_thread_specific.h>
 
 #include <atomic>
 #include <iosfwd>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,7 +80,7 @@ class Film {
     // get_image() adds a "variance" layer: the estimated variance of each pixel's mean
     // (s^2 / n). It assumes equal sample weights, which pbrt's filter importance sampling gives
     // for non-negative filters; light-tracing splats are not included.
-    void enable_variance() { moments_.assign(pixels_.size(), Moments{}); }
+    void enable_variance() { moments_.assign(pixel_count(), Moments{}); }
     bool monochromatic() const { return monochromatic_; }
 
     // A camera sample for `pixel`, which must lie inside pixel_bounds() (iterate those, not the
@@ -140,15 +137,16 @@ class Film {
     bool monochromatic_ = false;
     std::optional<RGB> achromatic_rgb_; // per unit of a sample's average, when achromatic
 
-    std::vector<Pixel> pixels_;
-    std::vector<Moments> moments_; // empty unless enable_variance()
-    // The splat sums, 3 per pixel in fixed point: the sum of what was restored from a
-    // checkpoint and of every thread's own additions since; an overflow sets splat_overflow_.
-    std::vector<int64_t> splat_sums() const;
+    size_t pixel_count() const { return size_t(pixel_bounds_.width()) * pixel_bounds_.height(); }
+    // The camera samples' store, allocated on first use (thread-safe).
+    Pixel *camera_pixels();
 
-    std::vector<int64_t> restored_splats_;
-    tbb::enumerable_thread_specific<std::vector<int64_t>> thread_splats_;
-    mutable std::atomic<bool> splat_overflow_{false};
+    std::vector<Pixel> pixels_;
+    std::once_flag pixels_allocated_;
+    std::vector<Moments> moments_; // empty unless enable_variance()
+    // Mutable: making an image or a checkpoint first adds the queued splats to the sums, which
+    // changes no value the film stands for.
+    mutable SplatBuffer splats_;
 };
 
 // The camera sample for a pixel: the position within the pixel (pixel + 0.5 + a filter offset
