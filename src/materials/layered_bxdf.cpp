@@ -27,6 +27,18 @@ bool usable(const std::optional<BSDFSample> &s) {
 constexpr int RouletteDepth = 3;
 constexpr float RouletteThroughput = 0.25f;
 
+// A walk's f and pdf are products of one factor per event, each often well below 1 (a phase
+// function is 1 / (4 pi) on average): over a long walk both would underflow in float, though
+// their ratio, the weight, stays near 1. Only the ratio is used (the sample's pdf is
+// proportional), so both are scaled up together when the pdf gets small.
+void keep_in_range(SampledSpectrum &f, float &pdf) {
+    constexpr float Small = 1e-10f, Scale = 1e10f;
+    if (pdf < Small) {
+        f *= Scale;
+        pdf *= Scale;
+    }
+}
+
 // Weight of the estimated density in pdf(); the rest is uniform over the sphere (pbrt-v4 14.3.3).
 constexpr float EstimateWeight = 0.9f;
 
@@ -37,6 +49,10 @@ LayeredBxDF::LayeredBxDF(const DielectricBxDF *top, const BxDF *bottom, const La
     : top_(top), bottom_(bottom), medium_(medium), phase_(medium.g), max_depth_(max_depth),
       n_samples_(n_samples), dispersive_coat_(dispersive_coat) {
     medium_.thickness = std::max(medium_.thickness, std::numeric_limits<float>::min());
+}
+
+float LayeredBxDF::virtual_light_pdf(Vec3f wi, Vec3f w, TransportMode mode) const {
+    return top_->pdf(wi, -w, adjoint(mode), SampleFlags::Transmission);
 }
 
 float LayeredBxDF::transmittance(float dz, Vec3f w) {
@@ -115,9 +131,8 @@ SampledSpectrum LayeredBxDF::f(Vec3f wo, Vec3f wi, TransportMode mode) const {
                     if (w.z > 0 && !top_specular) {
                         const SampledSpectrum f_exit = top_->f(-w, wi, mode);
                         if (!f_exit.is_black()) {
-                            const float exit_pdf = top_->pdf(-w, wi, mode, SampleFlags::Transmission);
                             result += beta * transmittance(zp - thickness, w) * f_exit *
-                                      power_heuristic(1, ps.p, 1, exit_pdf);
+                                      power_heuristic(1, ps.p, 1, virtual_light_pdf(wi, w, mode));
                         }
                     }
                     continue;
@@ -151,7 +166,7 @@ SampledSpectrum LayeredBxDF::f(Vec3f wo, Vec3f wi, TransportMode mode) const {
                 if (!f_exit.is_black()) {
                     float wt = 1;
                     if (!bottom_specular)
-                        wt = power_heuristic(1, bs->pdf, 1, top_->pdf(-w, wi, mode, SampleFlags::Transmission));
+                        wt = power_heuristic(1, bs->pdf, 1, virtual_light_pdf(wi, w, mode));
                     result += beta * transmittance(thickness, bs->wi) * f_exit * wt;
                 }
             }
@@ -204,6 +219,7 @@ std::optional<BSDFSample> LayeredBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tra
                 if (!(ps.p > 0) || ps.wi.z == 0) return {};
                 f *= medium_.albedo * ps.p;
                 pdf *= ps.p;
+                keep_in_range(f, pdf);
                 specular_path = false;
                 w = ps.wi;
                 z = zp;
@@ -219,6 +235,7 @@ std::optional<BSDFSample> LayeredBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tra
         if (!usable(s)) return {};
         f *= s->f;
         pdf *= s->pdf;
+        keep_in_range(f, pdf);
         specular_path = specular_path && s->is_specular();
         w = s->wi;
         if (s->is_transmission()) {
