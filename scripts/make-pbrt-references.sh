@@ -32,7 +32,8 @@ milky-glass 32768
 light-in-glass 4096
 underwater-point 4096
 narrow-line 4096
-near-specular-glass 4096"
+near-specular-glass 4096
+coated-low-roughness 4096"
 
 want=("$@")
 while read -r scene spp; do
