@@ -5,6 +5,7 @@
 #include "materials/conductor_material.h"
 #include "materials/dielectric_material.h"
 #include "materials/diffuse_material.h"
+#include "materials/diffuse_transmission_material.h"
 #include "materials/disney_material.h"
 #include "params/constant_textures.h"
 #include "params/parameters.h"
@@ -19,7 +20,7 @@ namespace caustica {
 
 namespace {
 
-constexpr std::array UnsupportedMaterials = {"measured", "hair", "subsurface", "mix", "diffusetransmission"};
+constexpr std::array UnsupportedMaterials = {"measured", "hair", "subsurface", "mix"};
 
 std::string quoted(const std::string &s) { return "\"" + s + "\""; }
 
@@ -211,6 +212,15 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         material = std::make_shared<DiffuseMaterial>(read_reflectance(params, textures));
     } else if (type == "conductor") {
         material = create_conductor(params, textures);
+    } else if (type == "diffusetransmission") {
+        SpectrumTexturePtr t = params.get_spectrum_texture("transmittance", std::make_shared<ConstantSpectrum>(0.25f),
+                                                           SpectrumType::Albedo, textures);
+        SpectrumTexturePtr r = params.get_spectrum_texture("reflectance", std::make_shared<ConstantSpectrum>(0.25f),
+                                                           SpectrumType::Albedo, textures);
+        const float scale = params.get_one_float("scale", 1);
+        if (!(scale >= 0 && std::isfinite(scale)))
+            throw InputError(params.location("scale"), "\"scale\" must be a non-negative number");
+        material = std::make_shared<DiffuseTransmissionMaterial>(r, t, scale);
     } else if (type == "coateddiffuse") {
         material = std::make_shared<CoatedDiffuseMaterial>(read_reflectance(params, textures),
                                                            read_coating(params, textures, ""));

@@ -18,16 +18,18 @@
 //    "reflectance", and "conductor.roughness" (or .uroughness / .vroughness, default 0), under a
 //    coat with "interface.eta" (default 1.5) and "interface.roughness" (etc., default 0), and
 //    "thickness", "albedo", "g", "maxdepth", "nsamples" as for coateddiffuse;
+//  - "diffusetransmission": "reflectance" and "transmittance" (spectrum textures, default 0.25),
+//    both multiplied by "scale" (default 1);
 //  - "interface": no material (nullptr): the surface only separates media.
-// Not supported yet: "measured", "hair", "subsurface", "mix", "diffusetransmission". These warn, naming the type, and render as "diffuse" with
-// their "reflectance" (default 0.5); their other parameters are ignored without further
-// warnings.
+// Not supported yet: "measured", "hair", "subsurface", "mix". These warn, naming the type, and
+// render as "diffuse" with their "reflectance" (default 0.5); their other parameters are
+// ignored without further warnings.
 //
 // Errors (InputError at the offending parameter): an unknown type (at loc), negative or NaN
 // roughness, a non-positive or NaN index of refraction, conflicting parameterisations (eta
 // together with Sellmeier/Cauchy coefficients or conductor reflectance together with eta/k),
 // negative absorption, a non-positive atDistance; for coated materials a negative thickness,
-// |g| >= 1, maxdepth or nsamples below 1. Unused parameters produce warnings.
+// |g| >= 1, maxdepth or nsamples below 1; a negative diffusetransmission scale. Unused parameters produce warnings.
 #pragma once
 
 #include "core/error.h"
