@@ -3,7 +3,9 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace caustica {
 
