@@ -127,13 +127,15 @@ TEST_P(HardTransport, MatchesPbrtV4) {
 //   image's error is correlated (issue 19, spiky spectra in the photon integrators); and pt on
 //   narrow-line, whose variance there is about a hundred times bdpt's per sample (measured, not
 //   explained yet);
-// - pt and sppm on coated-low-roughness, whose near-specular coat (alpha 0.01) mirrors the small
-//   light onto the wall: pt finds that caustic only when a bounce off the wall happens to reflect
-//   into the light, and sppm evaluates the coat's spike at visible points against photons (the
-//   coat's diffuse base makes its BSDF a visible point, as in pbrt-v4). Both estimators are
+// - pt, lt and sppm on coated-low-roughness, whose near-specular coat (alpha 0.01) mirrors the
+//   small light onto the wall and the wall into the floor: pt finds that caustic only when a
+//   bounce off the wall happens to reflect into the light, and lt and sppm meet the coat's spike
+//   at light vertices or visible points (the coat's diffuse base makes its BSDF a visible point,
+//   as in pbrt-v4) only when a light path happens to arrive within it. These estimators are
 //   heavy-tailed there: their image means are within 0.3% of pbrt-v4's, but single blocks fall
 //   outside |z| < 5 (pt: 7.0 at 1024 spp, on a block whose mean another seed puts within 0.1%;
-//   sppm: 8.5 at 2048 iterations, the near floor's mirror image 11% low), the per-pixel
+//   sppm: 8.5 at 2048 iterations and lt: 11 at 64, both on the near floor's mirror image, which
+//   lt has 4% low at 64 iterations and 10% high at 1024 with another seed), the per-pixel
 //   variance estimate missing the rare large samples.
 const HardCase kCases[] = {
 #include "hard_transport_cases.inc"
