@@ -7,6 +7,7 @@
 #include "materials/diffuse_material.h"
 #include "materials/diffuse_transmission_material.h"
 #include "materials/disney_material.h"
+#include "materials/mix_material.h"
 #include "params/constant_textures.h"
 #include "params/parameters.h"
 #include "spectral/ior.h"
@@ -20,7 +21,7 @@ namespace caustica {
 
 namespace {
 
-constexpr std::array UnsupportedMaterials = {"measured", "hair", "subsurface", "mix"};
+constexpr std::array UnsupportedMaterials = {"measured", "hair", "subsurface"};
 
 std::string quoted(const std::string &s) { return "\"" + s + "\""; }
 
@@ -196,6 +197,31 @@ MaterialPtr create_coated_conductor(const ParameterDictionary &params, const Nam
     return std::make_shared<CoatedConductorMaterial>(c.eta, c.k, c.reflectance, roughness, coating);
 }
 
+MaterialPtr create_mix(const ParameterDictionary &params, const NamedTextures &textures,
+                       const std::map<std::string, MaterialPtr> *named) {
+    const std::vector<std::string> names = params.get_string_array("materials");
+    if (names.size() != 2)
+        throw InputError(params.location("materials"),
+                         "\"materials\" must name two materials, not " + std::to_string(names.size()));
+    static const std::map<std::string, MaterialPtr> none;
+    const std::map<std::string, MaterialPtr> &table = named ? *named : none;
+    MaterialPtr m[2];
+    for (int i = 0; i < 2; ++i) {
+        const auto it = table.find(names[i]);
+        if (it == table.end())
+            throw InputError(params.location("materials"),
+                             "named material " + quoted(names[i]) + " is not defined before the mix");
+        m[i] = it->second;
+        if (!m[i] || m[i]->has_interior_medium() || m[i]->has_interior_absorption() || m[i]->has_subsurface() ||
+            m[i]->has_profile_subsurface())
+            throw InputError(params.location("materials"),
+                             "material " + quoted(names[i]) +
+                                 " cannot be mixed: a mix takes materials without an interior (no "
+                                 "\"interface\", medium, absorption or subsurface scattering)");
+    }
+    return std::make_shared<MixMaterial>(m[0], m[1], params.get_float_texture("amount", 0.5f, textures));
+}
+
 SpectrumTexturePtr read_reflectance(const ParameterDictionary &params, const NamedTextures &textures) {
     return params.get_spectrum_texture("reflectance", std::make_shared<ConstantSpectrum>(0.5f),
                                        SpectrumType::Albedo, textures);
@@ -204,7 +230,8 @@ SpectrumTexturePtr read_reflectance(const ParameterDictionary &params, const Nam
 } // namespace
 
 MaterialPtr create_material(const std::string &type, const ParameterDictionary &params,
-                            const NamedTextures &textures, const SourceLocation &loc) {
+                            const NamedTextures &textures, const SourceLocation &loc,
+                            const std::map<std::string, MaterialPtr> *named) {
     MaterialPtr material;
     if (type == "interface") {
         material = nullptr;
@@ -212,6 +239,8 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         material = std::make_shared<DiffuseMaterial>(read_reflectance(params, textures));
     } else if (type == "conductor") {
         material = create_conductor(params, textures);
+    } else if (type == "mix") {
+        material = create_mix(params, textures, named);
     } else if (type == "diffusetransmission") {
         SpectrumTexturePtr t = params.get_spectrum_texture("transmittance", std::make_shared<ConstantSpectrum>(0.25f),
                                                            SpectrumType::Albedo, textures);
