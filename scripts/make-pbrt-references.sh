@@ -33,7 +33,8 @@ light-in-glass 4096
 underwater-point 4096
 narrow-line 4096
 near-specular-glass 4096
-skin-lens 32768"
+skin-lens 32768
+coated-low-roughness 4096"
 
 want=("$@")
 while read -r scene spp; do

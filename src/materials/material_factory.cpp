@@ -1,9 +1,13 @@
 #include "materials/material_factory.h"
 
+#include "materials/coated_conductor_material.h"
+#include "materials/coated_diffuse_material.h"
 #include "materials/conductor_material.h"
 #include "materials/dielectric_material.h"
 #include "materials/diffuse_material.h"
+#include "materials/diffuse_transmission_material.h"
 #include "materials/disney_material.h"
+#include "materials/mix_material.h"
 #include "params/constant_textures.h"
 #include "params/parameters.h"
 #include "spectral/ior.h"
@@ -17,8 +21,7 @@ namespace caustica {
 
 namespace {
 
-constexpr std::array UnsupportedMaterials = {"coateddiffuse", "coatedconductor", "measured", "hair",
-                                             "subsurface", "mix", "diffusetransmission"};
+constexpr std::array UnsupportedMaterials = {"measured", "hair", "subsurface"};
 
 std::string quoted(const std::string &s) { return "\"" + s + "\""; }
 
@@ -31,15 +34,17 @@ void check_non_negative_texture(const ParameterDictionary &params, const std::st
                          quoted(name) + " must be a non-negative number, not " + std::to_string(*v));
 }
 
-MicrofacetRoughness read_roughness(const ParameterDictionary &params, const NamedTextures &textures) {
+// "uroughness", "vroughness" and "roughness", after a prefix ("interface." for a coat).
+MicrofacetRoughness read_roughness(const ParameterDictionary &params, const NamedTextures &textures,
+                                   const std::string &prefix = "") {
     MicrofacetRoughness r;
-    r.u = params.get_float_texture_or_null("uroughness", textures);
-    r.v = params.get_float_texture_or_null("vroughness", textures);
-    if (r.u) check_non_negative_texture(params, "uroughness", r.u);
-    if (r.v) check_non_negative_texture(params, "vroughness", r.v);
+    r.u = params.get_float_texture_or_null(prefix + "uroughness", textures);
+    r.v = params.get_float_texture_or_null(prefix + "vroughness", textures);
+    if (r.u) check_non_negative_texture(params, prefix + "uroughness", r.u);
+    if (r.v) check_non_negative_texture(params, prefix + "vroughness", r.v);
     if (!r.u || !r.v) {
-        FloatTexturePtr both = params.get_float_texture("roughness", 0, textures);
-        check_non_negative_texture(params, "roughness", both);
+        FloatTexturePtr both = params.get_float_texture(prefix + "roughness", 0, textures);
+        check_non_negative_texture(params, prefix + "roughness", both);
         if (!r.u) r.u = both;
         if (!r.v) r.v = both;
     }
@@ -130,22 +135,91 @@ SpectrumPtr read_interior_absorption(const ParameterDictionary &params) {
     return nullptr;
 }
 
-MaterialPtr create_conductor(const ParameterDictionary &params, const NamedTextures &textures) {
-    SpectrumTexturePtr eta = params.get_spectrum_texture_or_null("eta", SpectrumType::Unbounded, textures);
-    SpectrumTexturePtr k = params.get_spectrum_texture_or_null("k", SpectrumType::Unbounded, textures);
-    SpectrumTexturePtr reflectance =
-        params.get_spectrum_texture_or_null("reflectance", SpectrumType::Albedo, textures);
-    if (reflectance && (eta || k))
+// A metal's index ("eta", "k", after a prefix) or its "reflectance"; default copper.
+struct ConductorIndex {
+    SpectrumTexturePtr eta, k, reflectance;
+};
+ConductorIndex read_conductor_index(const ParameterDictionary &params, const NamedTextures &textures,
+                                    const std::string &prefix = "") {
+    ConductorIndex c;
+    c.eta = params.get_spectrum_texture_or_null(prefix + "eta", SpectrumType::Unbounded, textures);
+    c.k = params.get_spectrum_texture_or_null(prefix + "k", SpectrumType::Unbounded, textures);
+    c.reflectance = params.get_spectrum_texture_or_null("reflectance", SpectrumType::Albedo, textures);
+    if (c.reflectance && (c.eta || c.k))
         throw InputError(params.location("reflectance"),
-                         "a conductor takes either \"reflectance\" or \"eta\" and \"k\", not both");
-    if (!reflectance) {
-        if (!eta) eta = std::make_shared<ConstantSpectrumTexture>(get_named_spectrum("metal-Cu-eta"));
-        if (!k) k = std::make_shared<ConstantSpectrumTexture>(get_named_spectrum("metal-Cu-k"));
-        check_spectrum_texture(params, "eta", eta, false, "positive");
-        check_spectrum_texture(params, "k", k, true, "non-negative");
+                         "a conductor takes either \"reflectance\" or " + quoted(prefix + "eta") + " and " +
+                             quoted(prefix + "k") + ", not both");
+    if (!c.reflectance) {
+        if (!c.eta) c.eta = std::make_shared<ConstantSpectrumTexture>(get_named_spectrum("metal-Cu-eta"));
+        if (!c.k) c.k = std::make_shared<ConstantSpectrumTexture>(get_named_spectrum("metal-Cu-k"));
+        check_spectrum_texture(params, prefix + "eta", c.eta, false, "positive");
+        check_spectrum_texture(params, prefix + "k", c.k, true, "non-negative");
     }
+    return c;
+}
+
+MaterialPtr create_conductor(const ParameterDictionary &params, const NamedTextures &textures) {
+    ConductorIndex c = read_conductor_index(params, textures);
     MicrofacetRoughness roughness = read_roughness(params, textures);
-    return std::make_shared<ConductorMaterial>(eta, k, reflectance, roughness);
+    return std::make_shared<ConductorMaterial>(c.eta, c.k, c.reflectance, roughness);
+}
+
+// The coat and slab of "coateddiffuse" / "coatedconductor"; the coat's parameters carry the
+// prefix ("interface." for coatedconductor).
+Coating read_coating(const ParameterDictionary &params, const NamedTextures &textures, const std::string &prefix) {
+    Coating c;
+    c.eta = params.get_one_spectrum(prefix + "eta", std::make_shared<ConstantSpectrum>(1.5f), SpectrumType::Unbounded);
+    check_spectrum(params, prefix + "eta", *c.eta, false, "a positive index of refraction");
+    c.roughness = read_roughness(params, textures, prefix);
+    c.thickness = params.get_float_texture("thickness", 0.01f, textures);
+    check_non_negative_texture(params, "thickness", c.thickness);
+    c.albedo = params.get_spectrum_texture("albedo", std::make_shared<ConstantSpectrum>(0.f), SpectrumType::Albedo,
+                                           textures);
+    check_spectrum_texture(params, "albedo", c.albedo, true, "non-negative");
+    c.g = params.get_float_texture("g", 0, textures);
+    if (const float *g = c.g->constant_value(); g && !(std::abs(*g) < 1))
+        throw InputError(params.location("g"), "\"g\" must lie strictly between -1 and 1, not " + std::to_string(*g));
+    c.max_depth = params.get_one_int("maxdepth", 10);
+    if (c.max_depth < 1)
+        throw InputError(params.location("maxdepth"),
+                         "\"maxdepth\" must be at least 1, not " + std::to_string(c.max_depth));
+    c.n_samples = params.get_one_int("nsamples", 1);
+    if (c.n_samples < 1)
+        throw InputError(params.location("nsamples"),
+                         "\"nsamples\" must be at least 1, not " + std::to_string(c.n_samples));
+    return c;
+}
+
+MaterialPtr create_coated_conductor(const ParameterDictionary &params, const NamedTextures &textures) {
+    ConductorIndex c = read_conductor_index(params, textures, "conductor.");
+    MicrofacetRoughness roughness = read_roughness(params, textures, "conductor.");
+    Coating coating = read_coating(params, textures, "interface.");
+    return std::make_shared<CoatedConductorMaterial>(c.eta, c.k, c.reflectance, roughness, coating);
+}
+
+MaterialPtr create_mix(const ParameterDictionary &params, const NamedTextures &textures,
+                       const std::map<std::string, MaterialPtr> *named) {
+    const std::vector<std::string> names = params.get_string_array("materials");
+    if (names.size() != 2)
+        throw InputError(params.location("materials"),
+                         "\"materials\" must name two materials, not " + std::to_string(names.size()));
+    static const std::map<std::string, MaterialPtr> none;
+    const std::map<std::string, MaterialPtr> &table = named ? *named : none;
+    MaterialPtr m[2];
+    for (int i = 0; i < 2; ++i) {
+        const auto it = table.find(names[i]);
+        if (it == table.end())
+            throw InputError(params.location("materials"),
+                             "named material " + quoted(names[i]) + " is not defined before the mix");
+        m[i] = it->second;
+        if (!m[i] || m[i]->has_interior_medium() || m[i]->has_interior_absorption() || m[i]->has_subsurface() ||
+            m[i]->has_profile_subsurface())
+            throw InputError(params.location("materials"),
+                             "material " + quoted(names[i]) +
+                                 " cannot be mixed: a mix takes materials without an interior (no "
+                                 "\"interface\", medium, absorption or subsurface scattering)");
+    }
+    return std::make_shared<MixMaterial>(m[0], m[1], params.get_float_texture("amount", 0.5f, textures));
 }
 
 SpectrumTexturePtr read_reflectance(const ParameterDictionary &params, const NamedTextures &textures) {
@@ -156,7 +230,8 @@ SpectrumTexturePtr read_reflectance(const ParameterDictionary &params, const Nam
 } // namespace
 
 MaterialPtr create_material(const std::string &type, const ParameterDictionary &params,
-                            const NamedTextures &textures, const SourceLocation &loc) {
+                            const NamedTextures &textures, const SourceLocation &loc,
+                            const std::map<std::string, MaterialPtr> *named) {
     MaterialPtr material;
     if (type == "interface") {
         material = nullptr;
@@ -164,6 +239,22 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         material = std::make_shared<DiffuseMaterial>(read_reflectance(params, textures));
     } else if (type == "conductor") {
         material = create_conductor(params, textures);
+    } else if (type == "mix") {
+        material = create_mix(params, textures, named);
+    } else if (type == "diffusetransmission") {
+        SpectrumTexturePtr t = params.get_spectrum_texture("transmittance", std::make_shared<ConstantSpectrum>(0.25f),
+                                                           SpectrumType::Albedo, textures);
+        SpectrumTexturePtr r = params.get_spectrum_texture("reflectance", std::make_shared<ConstantSpectrum>(0.25f),
+                                                           SpectrumType::Albedo, textures);
+        const float scale = params.get_one_float("scale", 1);
+        if (!(scale >= 0 && std::isfinite(scale)))
+            throw InputError(params.location("scale"), "\"scale\" must be a non-negative number");
+        material = std::make_shared<DiffuseTransmissionMaterial>(r, t, scale);
+    } else if (type == "coateddiffuse") {
+        material = std::make_shared<CoatedDiffuseMaterial>(read_reflectance(params, textures),
+                                                           read_coating(params, textures, ""));
+    } else if (type == "coatedconductor") {
+        material = create_coated_conductor(params, textures);
     } else if (type == "dielectric") {
         SpectrumPtr eta = read_ior(params);
         MicrofacetRoughness roughness = read_roughness(params, textures);

@@ -10,29 +10,46 @@
 //    instead of "eta"; interior Beer-Lambert absorption from "sigma_a" (spectrum or rgb, per
 //    unit length) or from "rgb transmittance" with "float atDistance" (default 1);
 //  - "thindielectric": "eta" as for dielectric;
+//  - "coateddiffuse": "reflectance" (default 0.5) under a coat: "eta" (float or spectrum,
+//    default 1.5), roughness as for conductors (default 0), "thickness" (float texture, default
+//    0.01), "albedo" (spectrum texture, default 0), "g" (float texture, default 0), "maxdepth"
+//    (default 10), "nsamples" (default 1);
+//  - "coatedconductor": the metal's "conductor.eta" / "conductor.k" (default copper) or
+//    "reflectance", and "conductor.roughness" (or .uroughness / .vroughness, default 0), under a
+//    coat with "interface.eta" (default 1.5) and "interface.roughness" (etc., default 0), and
+//    "thickness", "albedo", "g", "maxdepth", "nsamples" as for coateddiffuse;
+//  - "diffusetransmission": "reflectance" and "transmittance" (spectrum textures, default 0.25),
+//    both multiplied by "scale" (default 1);
+//  - "mix": "string materials" [two named materials, declared before], "amount" (float texture,
+//    default 0.5: the probability of the second);
 //  - "interface": no material (nullptr): the surface only separates media.
-// Not supported yet: "coateddiffuse", "coatedconductor", "measured", "hair", "subsurface",
-// "mix", "diffusetransmission". These warn, naming the type, and render as "diffuse" with
-// their "reflectance" (default 0.5); their other parameters are ignored without further
-// warnings.
+// Not supported yet: "measured", "hair", "subsurface". These warn, naming the type, and
+// render as "diffuse" with their "reflectance" (default 0.5); their other parameters are
+// ignored without further warnings.
 //
 // Errors (InputError at the offending parameter): an unknown type (at loc), negative or NaN
 // roughness, a non-positive or NaN index of refraction, conflicting parameterisations (eta
 // together with Sellmeier/Cauchy coefficients or conductor reflectance together with eta/k),
-// negative absorption, a non-positive atDistance. Unused parameters produce warnings.
+// negative absorption, a non-positive atDistance; for coated materials a negative thickness,
+// |g| >= 1, maxdepth or nsamples below 1; a negative diffusetransmission scale; a mix of other
+// than two defined named materials, or of materials with an interior (medium, absorption,
+// subsurface). Unused parameters produce warnings.
 #pragma once
 
 #include "core/error.h"
 #include "materials/material.h"
 #include "textures/texture.h"
 
+#include <map>
 #include <string>
 
 namespace caustica {
 
 class ParameterDictionary;
 
+// named: the named materials created so far, which a "mix" refers to (declared before it).
 MaterialPtr create_material(const std::string &type, const ParameterDictionary &params,
-                            const NamedTextures &textures, const SourceLocation &loc);
+                            const NamedTextures &textures, const SourceLocation &loc,
+                            const std::map<std::string, MaterialPtr> *named = nullptr);
 
 } // namespace caustica

@@ -188,11 +188,11 @@ struct MaterialTable {
 MaterialTable create_materials(const SceneDescription &d, const NamedTextures &textures, Scene &scene) {
     MaterialTable table;
     for (const auto &[name, entity] : d.named_materials) {
-        table.named[name] = create_material(entity.type, entity.params, textures, entity.loc);
+        table.named[name] = create_material(entity.type, entity.params, textures, entity.loc, &table.named);
         if (table.named[name]) scene.materials.push_back(table.named[name]);
     }
     for (const SceneEntity &m : d.materials) {
-        table.anonymous.push_back(create_material(m.type, m.params, textures, m.loc));
+        table.anonymous.push_back(create_material(m.type, m.params, textures, m.loc, &table.named));
         if (table.anonymous.back()) scene.materials.push_back(table.anonymous.back());
     }
     scene.material_count = d.named_materials.size() + d.materials.size();
