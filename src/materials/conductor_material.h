@@ -10,6 +10,18 @@
 
 namespace caustica {
 
+struct TextureEvalContext;
+
+// A metal's complex index at the wavelengths lambda: (eta, k) from their textures, or, where the
+// reflectance texture is given instead, the eta = 1 metal whose normal-incidence reflectance it
+// is. Shared by "conductor" and the base of "coatedconductor".
+struct ConductorIndex {
+    SampledSpectrum eta, k;
+};
+ConductorIndex conductor_index(const SpectrumTexturePtr &eta, const SpectrumTexturePtr &k,
+                               const SpectrumTexturePtr &reflectance, const TextureEvalContext &ctx,
+                               const SampledWavelengths &lambda);
+
 class ConductorMaterial final : public Material {
   public:
     // Either eta and k, or reflectance (the others null).

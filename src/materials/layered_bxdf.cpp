@@ -3,21 +3,17 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 
+#include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace caustica {
 
 namespace {
 
-uint32_t float_bits(float v) {
-    uint32_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
+uint32_t bits(float v) { return std::bit_cast<uint32_t>(v); }
 
-uint64_t direction_hash(Vec3f w) { return hash_values(float_bits(w.x), float_bits(w.y), float_bits(w.z)); }
+uint64_t direction_hash(Vec3f w) { return hash_values(bits(w.x), bits(w.y), bits(w.z)); }
 
 // Usable as an interface sample: a direction off the plane with a positive density.
 bool usable(const std::optional<BSDFSample> &s) {
@@ -195,7 +191,7 @@ std::optional<BSDFSample> LayeredBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tra
 
     // The walk's throughput is kept as f / pdf, both accumulated along it (Guo et al. 2018,
     // section 4): the sample reports their ratio as its weight.
-    Rng rng(direction_hash(wo), hash_values(float_bits(uc), float_bits(u.x), float_bits(u.y)));
+    Rng rng(direction_hash(wo), hash_values(bits(uc), bits(u.x), bits(u.y)));
     auto r = [&rng] { return rng.uniform(); };
     const float thickness = medium_.thickness;
     const bool scattering_slab = !medium_.albedo.is_black();
