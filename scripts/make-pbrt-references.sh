@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Renders the pbrt-v4 references of the hard-transport scenes (scenes/hard; see
-# tests/data/pbrt-v4/hard/README.md) into tests/data/pbrt-v4/hard/. Not part of CI and
+# Renders the pbrt-v4 references of the scenes that tests compare with pbrt-v4: the
+# hard-transport scenes (scenes/hard; see tests/data/pbrt-v4/hard/README.md) and the procedural
+# textures (scenes/textures), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
 # not needed by any test: it needs a pbrt-v4 binary (PBRT, default ../shared/tools/pbrt-v4/pbrt)
 # and oiiotool, and takes about half an hour on 2 cores.
 #
@@ -15,26 +16,26 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PBRT=${PBRT:-../shared/tools/pbrt-v4/pbrt}
-out=tests/data/pbrt-v4/hard
-mkdir -p "$out"
+out=tests/data/pbrt-v4
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# scene  samples per run
-table="fog-point 16384
-fog-spot 4096
-fog-small-area 4096
-fog-large-area 4096
-fog-caustic 32768
-chromatic-fog 4096
-fog-box-spot 4096
-milky-glass 32768
-light-in-glass 4096
-underwater-point 4096
-narrow-line 4096
-near-specular-glass 4096
-skin-lens 32768
-coated-low-roughness 4096"
+# scene (scenes/SCENE.pbrt)  samples per run
+table="hard/fog-point 16384
+hard/fog-spot 4096
+hard/fog-small-area 4096
+hard/fog-large-area 4096
+hard/fog-caustic 32768
+hard/chromatic-fog 4096
+hard/fog-box-spot 4096
+hard/milky-glass 32768
+hard/light-in-glass 4096
+hard/underwater-point 4096
+hard/narrow-line 4096
+hard/near-specular-glass 4096
+hard/skin-lens 32768
+hard/coated-low-roughness 4096
+textures/noise-textures 256"
 
 want=("$@")
 while read -r scene spp; do
@@ -45,15 +46,16 @@ while read -r scene spp; do
     # of fog-small-area); a crashed run is rendered again with the next seed.
     for attempt in 0 1 2; do
       "$PBRT" --quiet --nthreads 2 --spp "$spp" --seed "$((seed + 10 * attempt))" \
-        --outfile "$tmp/$scene.$seed.exr" "scenes/hard/$scene.pbrt" && { seeds+=("$((seed + 10 * attempt))"); break; }
+        --outfile "$tmp/run.$seed.exr" "scenes/$scene.pbrt" && { seeds+=("$((seed + 10 * attempt))"); break; }
       [ "$attempt" -lt 2 ] || exit 1
     done
   done
-  oiiotool "$tmp/$scene.1.exr" --ch R,G,B "$tmp/$scene.2.exr" --ch R,G,B --add --mulc 0.5 -o "$tmp/mean.exr"
-  oiiotool "$tmp/$scene.1.exr" --ch R,G,B "$tmp/$scene.2.exr" --ch R,G,B --sub --mulc 0.5 \
+  oiiotool "$tmp/run.1.exr" --ch R,G,B "$tmp/run.2.exr" --ch R,G,B --add --mulc 0.5 -o "$tmp/mean.exr"
+  oiiotool "$tmp/run.1.exr" --ch R,G,B "$tmp/run.2.exr" --ch R,G,B --sub --mulc 0.5 \
     --chnames difference.R,difference.G,difference.B -o "$tmp/difference.exr"
+  mkdir -p "$(dirname "$out/$scene.exr")"
   oiiotool "$tmp/mean.exr" "$tmp/difference.exr" --chappend -d float --compression zip \
-    --attrib "pbrt-v4:command" "pbrt --nthreads 2 --spp $spp --seed $(IFS=,; echo "${seeds[*]}") scenes/hard/$scene.pbrt" \
+    --attrib "pbrt-v4:command" "pbrt --nthreads 2 --spp $spp --seed $(IFS=,; echo "${seeds[*]}") scenes/$scene.pbrt" \
     -o "$out/$scene.exr"
   echo "$scene: $spp spp x 2, $(oiiotool "$out/$scene.exr" --ch R,G,B --printstats | grep Avg)"
 done <<< "$table"

@@ -18,6 +18,7 @@
 #include <ctime>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace caustica {
@@ -153,6 +154,7 @@ int run_compare(const CompareCommandOptions &options) {
         }
     }
 
+    std::optional<SceneWarningOrder> in_file_order(std::in_place);
     SceneDescription description = parse_scene_file(options.scene_path);
     // The two renders of a budget must be independent; a Sampler "seed" would give both the same.
     if (description.sampler.params.has("seed"))
@@ -183,6 +185,7 @@ int run_compare(const CompareCommandOptions &options) {
         comparison.width = bounds.width();
         comparison.height = bounds.height();
     }
+    in_file_order.reset();
     if (!options.reference_path.empty() &&
         (given_reference.width != comparison.width || given_reference.height != comparison.height))
         throw InputError("the reference \"" + options.reference_path + "\" is " +

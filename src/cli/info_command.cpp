@@ -7,8 +7,13 @@
 namespace caustica {
 
 int run_info(const std::string &scene_path) {
-    SceneDescription description = parse_scene_file(scene_path);
-    std::unique_ptr<Scene> scene = build_scene(description, RenderOverrides{});
+    SceneDescription description;
+    std::unique_ptr<Scene> scene;
+    {
+        SceneWarningOrder in_file_order;
+        description = parse_scene_file(scene_path);
+        scene = build_scene(description, RenderOverrides{});
+    }
     const SceneFeatures &f = scene->features;
     Vec2i res = scene->film->resolution();
     auto yes_no = [](bool b) { return b ? "yes" : "no"; };

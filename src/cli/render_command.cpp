@@ -86,8 +86,13 @@ int run_render(const RenderCommandOptions &options) {
     if (options.wavelength != 0 && (options.wavelength < LambdaMin || options.wavelength > LambdaMax))
         throw InputError("--wavelength must lie in [360, 830] nm");
 
-    SceneDescription description = parse_scene_file(options.scene_path);
-    RenderSession session = create_render_session(description, overrides);
+    SceneDescription description;
+    RenderSession session;
+    {
+        SceneWarningOrder in_file_order;
+        description = parse_scene_file(options.scene_path);
+        session = create_render_session(description, overrides);
+    }
     Scene *scene = session.scene.get();
 
     std::string exr_path = options.exr_path.empty() ? scene->output_filename : options.exr_path;

@@ -39,6 +39,19 @@ void warning(const std::string &message);
 // Prints "note: message" to stderr: information the user asked for implicitly (such as why
 // `--integrator auto` chose an integrator); muted with the warnings.
 void note(const std::string &message);
+// While one of these is alive (the command line keeps one around reading and building a scene),
+// warnings with a location are held back; when it ends they are printed in the order their
+// locations are read, an included file's where its Include stands, and each distinct warning
+// once however many times an Include repeats it. Warnings without a location follow them.
+class SceneWarningOrder {
+  public:
+    SceneWarningOrder();
+    ~SceneWarningOrder();
+    SceneWarningOrder(const SceneWarningOrder &) = delete;
+    SceneWarningOrder &operator=(const SceneWarningOrder &) = delete;
+    // The parser reports each file it reads through Include or Import: `file` is read at `at`.
+    static void file_included(const SourceLocation &at, const std::string &file);
+};
 // Tests silence warnings; the command line keeps them on.
 void set_warnings_enabled(bool enabled);
 

@@ -1,11 +1,11 @@
 #include "geometry/mesh_file.h"
 
-#include "geometry/ply_header.h"
+#include "core/file_contents.h"
+#include "geometry/ply_file.h"
 
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <zlib.h>
 
 #include <filesystem>
 #include <memory>
@@ -23,38 +23,21 @@ bool ends_with(const std::string &s, const std::string &suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-std::vector<char> read_gzip(const std::string &path, const SourceLocation &loc) {
-    gzFile file = gzopen(path.c_str(), "rb");
-    if (!file) throw InputError(loc, "cannot open mesh file \"" + path + "\"");
-    std::vector<char> data;
-    char buffer[1 << 16];
-    int n;
-    while ((n = gzread(file, buffer, sizeof buffer)) > 0) data.insert(data.end(), buffer, buffer + n);
-    int error = 0;
-    std::string message = n < 0 ? gzerror(file, &error) : "";
-    gzclose(file);
-    if (n < 0) throw InputError(loc, "cannot decompress \"" + path + "\": " + message);
-    return data;
-}
-
 } // namespace
 
 MeshData read_mesh_file(const std::string &path, const SourceLocation &loc) {
     if (!std::filesystem::exists(path)) throw InputError(loc, "mesh file \"" + path + "\" not found");
-    // No other post-processing: pbrt uses the vertices, normals and winding as stored.
-    const unsigned flags = aiProcess_Triangulate;
-    ScenePtr scene;
-    if (ends_with(path, ".gz")) {
-        std::vector<char> data = read_gzip(path, loc);
-        check_ply_element_counts(std::string_view(data.data(), data.size()), data.size(), path, loc);
-        std::string inner = path.substr(0, path.size() - 3);
-        std::string hint = std::filesystem::path(inner).extension().string();
-        if (!hint.empty()) hint = hint.substr(1);
-        scene.reset(aiImportFileFromMemory(data.data(), unsigned(data.size()), flags, hint.c_str()));
-    } else {
-        check_ply_file_element_counts(path, loc);
-        scene.reset(aiImportFile(path.c_str(), flags));
-    }
+    std::string error;
+    std::optional<std::string> data = read_file_contents(path, &error);
+    if (!data) throw InputError(loc, "mesh file \"" + path + "\": " + error);
+    if (is_ply(*data)) return read_ply(*data, path, loc);
+    // Other formats go to Assimp, with no post-processing but triangulation: pbrt uses the
+    // vertices, normals and winding as stored.
+    std::string inner = ends_with(path, ".gz") ? path.substr(0, path.size() - 3) : path;
+    std::string hint = std::filesystem::path(inner).extension().string();
+    if (!hint.empty()) hint = hint.substr(1);
+    ScenePtr scene(aiImportFileFromMemory(data->data(), unsigned(data->size()), aiProcess_Triangulate,
+                                          hint.c_str()));
     if (!scene) throw InputError(loc, "cannot read mesh file \"" + path + "\": " + aiGetErrorString());
 
     MeshData mesh;

@@ -1,4 +1,5 @@
-// Reading triangle meshes from files (pbrt's "plymesh"), through Assimp.
+// Reading triangle meshes from files (pbrt's "plymesh"): PLY by our reader, the rest through
+// Assimp.
 #pragma once
 
 #include "core/error.h"
@@ -8,10 +9,10 @@
 
 namespace caustica {
 
-// Reads the mesh in `path` with Assimp: PLY as pbrt uses it (positions, optional normals and
-// uv), or any other format Assimp recognises. Polygons are split into triangles; several meshes
-// in one file are concatenated. Files ending in ".gz" are decompressed first (Assimp reads PLY
-// only uncompressed). Throws InputError at loc if the file cannot be read or holds no triangles.
+// Reads the mesh in `path`: PLY as pbrt-v4 does (geometry/ply_file.h), or any other format
+// Assimp recognises, with polygons split into triangles and several meshes in one file
+// concatenated. Files ending in ".gz" are decompressed first. Throws InputError at loc if the
+// file cannot be read or holds no triangles.
 MeshData read_mesh_file(const std::string &path, const SourceLocation &loc);
 
 } // namespace caustica

@@ -4,6 +4,7 @@
 // InputError at the token responsible.
 #include "parser/scene_description.h"
 
+#include "core/file_contents.h"
 #include "params/number_text.h"
 #include "parser/tokenizer.h"
 #include "spectral/color_space.h"
@@ -11,7 +12,6 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <memory>
@@ -34,16 +34,6 @@ bool is_finite(const Matrix4 &m) {
         for (float v : row)
             if (!std::isfinite(v)) return false;
     return true;
-}
-
-std::string read_file(const fs::path &path, bool *ok) {
-    std::ifstream in(path, std::ios::binary);
-    *ok = bool(in);
-    if (!in) return {};
-    std::ostringstream s;
-    s << in.rdbuf();
-    *ok = !in.bad();
-    return s.str();
 }
 
 // The state that AttributeBegin saves and AttributeEnd restores (pbrt-v4's GraphicsState).
@@ -112,15 +102,15 @@ class SceneParser {
     }
 
     void push_file(const fs::path &path, const SourceLocation &include_loc) {
-        bool ok;
-        std::string text = read_file(path, &ok);
-        if (!ok) {
+        std::string why;
+        std::optional<std::string> text = read_file_contents(path, &why);
+        if (!text) {
             if (include_loc.file.empty())
-                throw InputError("cannot read scene file \"" + path.string() + "\"");
-            throw InputError(include_loc, "cannot read \"" + path.string() + "\"");
+                throw InputError("cannot read scene file \"" + path.string() + "\": " + why);
+            throw InputError(include_loc, "cannot read \"" + path.string() + "\": " + why);
         }
         Source s;
-        s.tokenizer = std::make_unique<Tokenizer>(std::move(text), intern(path.string()));
+        s.tokenizer = std::make_unique<Tokenizer>(std::move(*text), intern(path.string()));
         std::error_code ec;
         s.canonical_path = fs::weakly_canonical(path, ec);
         if (ec) s.canonical_path = fs::absolute(path);
@@ -661,6 +651,7 @@ class SceneParser {
         check_nesting(d, name_tok, name, canonical);
         std::optional<GraphicsState> saved;
         if (is_import) saved = state_;
+        SceneWarningOrder::file_included(name_tok.location(), path.string());
         push_file(path, name_tok.location());
         if (is_import) start_import(std::move(saved));
     }
@@ -677,6 +668,7 @@ class SceneParser {
                                      "no in-memory file is called " + path.string() + ")");
         std::optional<GraphicsState> saved;
         if (is_import) saved = state_;
+        SceneWarningOrder::file_included(name_tok.location(), path.string());
         push_text(*it->second, path.string(), path.parent_path());
         if (is_import) start_import(std::move(saved));
     }
@@ -761,6 +753,11 @@ class SceneParser {
     void material(const Token &d) {
         SceneEntity e = entity(d, "material type", &state_.material_defaults);
         require_world_block(d);
+        if (e.type.empty() || e.type == "none") {
+            warning(d.location(), "Material \"" + e.type + "\" is deprecated; using \"interface\" "
+                                  "(no surface, only a boundary between media), as pbrt-v4 does");
+            e.type = "interface";
+        }
         desc_.materials.push_back(std::move(e));
         state_.material_index = int(desc_.materials.size()) - 1;
         state_.material_name.clear();

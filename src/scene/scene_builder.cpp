@@ -135,6 +135,10 @@ void choose_integrator(const SceneDescription &d, const RenderOverrides &ov, Sce
 
 void create_textures(const SceneDescription &d, NamedTextures &textures) {
     for (const TextureEntity &t : d.textures) {
+        if (t.type == "ptex")
+            throw InputError(t.loc, "texture \"" + t.name + "\": \"ptex\" textures are not supported "
+                                    "(Debian 12 packages no Ptex library); convert the Ptex file to an "
+                                    "image and use \"imagemap\"");
         if (t.texture_class == "float") {
             textures.float_textures[t.name] =
                 create_float_texture(t.type, t.render_from_object, t.params, textures, t.loc);
@@ -358,7 +362,10 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     scene->overrides = ov;
     choose_integrator(d, ov, *scene);
 
-    if (!d.has_camera) throw InputError(SourceLocation{}, "the scene has no Camera directive");
+    // pbrt-v4's default camera: perspective, at the origin of world space, looking along +z.
+    if (!d.has_camera)
+        warning("the scene has no Camera directive; using pbrt-v4's default, a perspective camera "
+                "at the origin looking along +z");
     check_film_size(d.film, ov);
     check_sample_count(d.sampler, ov);
     std::unique_ptr<Filter> filter =

@@ -1,7 +1,12 @@
-// pbrt-v4's "mix" texture: (1 - amount) tex1 + amount tex2, with a float texture "amount".
+// pbrt-v4's "mix" texture: (1 - amount) tex1 + amount tex2, with a float texture "amount"; and
+// its "directionmix", the same mix with amount 1 - |n . dir|, so that tex1 shows where the
+// surface faces along "dir" and tex2 where it is edge-on.
 #pragma once
 
 #include "textures/texture_evaluation.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace caustica {
 
@@ -25,6 +30,18 @@ template <typename Base> class MixTexture final : public TextureAdapter<Base, Mi
   private:
     TexturePtr<Base> tex1_, tex2_;
     FloatTexturePtr amount_;
+};
+
+// The amount of "directionmix": 1 - |n . direction|, direction a unit vector in render space.
+class DirectionMixAmount final : public FloatTexture {
+  public:
+    explicit DirectionMixAmount(Vec3f direction) : direction_(direction) {}
+    float evaluate(const TextureEvalContext &ctx) const override {
+        return 1 - std::min(std::abs(dot(ctx.n, direction_)), 1.f);
+    }
+
+  private:
+    Vec3f direction_;
 };
 
 } // namespace caustica

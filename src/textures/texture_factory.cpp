@@ -7,6 +7,7 @@
 #include "textures/checkerboard_texture.h"
 #include "textures/image_texture.h"
 #include "textures/mix_texture.h"
+#include "textures/noise_textures.h"
 #include "textures/scale_texture.h"
 
 #include <algorithm>
@@ -15,18 +16,6 @@
 namespace caustica {
 
 namespace {
-
-// pbrt-v4 texture types Caustica does not implement yet (see texture_factory.h).
-constexpr std::array UnsupportedTypes = {"ptex", "fbm", "wrinkled", "windy", "marble", "dots", "directionmix"};
-constexpr float UnsupportedTextureValue = 0.5f;
-
-bool is_unsupported(const std::string &type) {
-    return std::find(UnsupportedTypes.begin(), UnsupportedTypes.end(), type) != UnsupportedTypes.end();
-}
-void warn_unsupported(const std::string &type, const SourceLocation &loc) {
-    warning(loc, "texture type \"" + type + "\" is not supported yet; using the constant " +
-                     "0.5 in its place");
-}
 
 TextureMapping2D create_mapping_2d(const Transform &render_from_texture,
                                    const ParameterDictionary &params) {
@@ -46,6 +35,15 @@ TextureMapping2D create_mapping_2d(const Transform &render_from_texture,
     throw InputError(params.location("mapping"),
                      "unknown texture mapping \"" + kind + "\" (expected \"uv\", \"spherical\", "
                      "\"cylindrical\" or \"planar\")");
+}
+
+// The "octaves" of the noise textures; pbrt-v4's default is 8.
+int octaves(const ParameterDictionary &params) {
+    int n = params.get_one_int("octaves", 8);
+    if (n < 0 || n > 64)
+        throw InputError(params.location("octaves"), "\"octaves\" must lie in [0, 64], not " +
+                                                         std::to_string(n));
+    return n;
 }
 
 // Reads a child texture of either flavour with a constant default.
@@ -96,10 +94,16 @@ TexturePtr<Base> create_composite(const std::string &type, const Transform &rend
         return std::make_shared<BilerpTexture<Base>>(create_mapping_2d(render_from_texture, params),
                                                      children.get("v00", 0), children.get("v10", 0),
                                                      children.get("v01", 1), children.get("v11", 1));
-    if (is_unsupported(type)) {
-        warn_unsupported(type, loc);
-        return children.constant(UnsupportedTextureValue);
+    if (type == "directionmix") {
+        Vec3f dir = render_from_texture.apply_vector(params.get_one_vector3("dir", Vec3f(0, 1, 0)));
+        if (!(length(dir) > 0))
+            throw InputError(params.location("dir"), "directionmix: \"dir\" must not be zero");
+        return std::make_shared<MixTexture<Base>>(children.get("tex1", 0), children.get("tex2", 1),
+                                                  std::make_shared<DirectionMixAmount>(normalize(dir)));
     }
+    if (type == "dots")
+        return std::make_shared<DotsTexture<Base>>(create_mapping_2d(render_from_texture, params),
+                                                   children.get("outside", 0), children.get("inside", 1));
     throw InputError(loc, "unknown texture type \"" + type + "\"");
 }
 
@@ -109,16 +113,24 @@ FloatTexturePtr create_float_texture(const std::string &type, const Transform &r
                                      const ParameterDictionary &params, const NamedTextures &textures,
                                      const SourceLocation &loc) {
     FloatTexturePtr result;
+    TextureMapping3D mapping_3d(render_from_texture.inverse());
     if (type == "constant")
         result = std::make_shared<ConstantFloatTexture>(params.get_one_float("value", 1));
+    else if (type == "fbm")
+        result = std::make_shared<FBmTexture>(mapping_3d, params.get_one_float("roughness", 0.5f),
+                                              octaves(params));
+    else if (type == "wrinkled")
+        result = std::make_shared<WrinkledTexture>(mapping_3d, params.get_one_float("roughness", 0.5f),
+                                                   octaves(params));
+    else if (type == "windy")
+        result = std::make_shared<WindyTexture>(mapping_3d);
     else if (type == "imagemap")
         result = std::make_shared<FloatImageTexture>(
             read_image_lookup(create_mapping_2d(render_from_texture, params), params, 1, loc));
     else
         result = create_composite<FloatTexture>(type, render_from_texture, params,
                                                 FloatChildren{params, textures}, textures, loc);
-    // Parameters of an unsupported type were never looked at; the warning above already says so.
-    if (!is_unsupported(type)) params.report_unused();
+    params.report_unused();
     return result;
 }
 
@@ -128,7 +140,11 @@ SpectrumTexturePtr create_spectrum_texture(const std::string &type,
                                            SpectrumType spectrum_type,
                                            const NamedTextures &textures, const SourceLocation &loc) {
     SpectrumTexturePtr result;
-    if (type == "constant")
+    if (type == "marble")
+        result = std::make_shared<MarbleTexture>(
+            TextureMapping3D(render_from_texture.inverse()), params.get_one_float("roughness", 0.5f),
+            octaves(params), params.get_one_float("scale", 1), params.get_one_float("variation", 0.2f));
+    else if (type == "constant")
         result = std::make_shared<ConstantSpectrumTexture>(params.get_one_spectrum(
             "value", std::make_shared<ConstantSpectrum>(1.f), spectrum_type));
     else if (type == "imagemap")
@@ -141,7 +157,7 @@ SpectrumTexturePtr create_spectrum_texture(const std::string &type,
         result = create_composite<SpectrumTexture>(type, render_from_texture, params,
                                                    SpectrumChildren{params, textures, spectrum_type},
                                                    textures, loc);
-    if (!is_unsupported(type)) params.report_unused();
+    params.report_unused();
     return result;
 }
 

@@ -3,11 +3,11 @@
 // "scale"), "mix" ((1 - "amount") "tex1" + "amount" "tex2"), "checkerboard" ("tex1"/"tex2",
 // "dimension" 2 or 3), "bilerp" ("v00" "v10" "v01" "v11"), "imagemap" (image_texture.h); 2D
 // ones take pbrt's "mapping" ("uv" with "uscale" "vscale" "udelta" "vdelta", "spherical",
-// "cylindrical", "planar" with "v1" "v2" "udelta" "vdelta").
-//
-// pbrt's other texture types ("ptex", "fbm", "wrinkled", "windy", "marble", "dots",
-// "directionmix") are not supported yet: they produce a warning naming the type and a constant
-// 0.5, so scenes using them still render. An unknown type is an InputError.
+// "cylindrical", "planar" with "v1" "v2" "udelta" "vdelta"), "directionmix" ("tex1" "tex2"
+// "dir"), and the noise textures of noise_textures.h: "fbm", "wrinkled", "windy" (float),
+// "marble" (spectrum) and "dots" ("inside" "outside"), with "roughness" and "octaves".
+// An unknown type is an InputError; "ptex" is refused by the scene builder, which names the
+// texture (Debian 12 has no Ptex library).
 #pragma once
 
 #include "core/error.h"

@@ -153,7 +153,7 @@ void expect_quad_ply(const ShapeGroup &group) {
     EXPECT_NEAR(si.uv.x, 0.15f, 1e-6);
 }
 
-TEST(CreateShape, PlyMeshThroughAssimp) {
+TEST(CreateShape, PlyMesh) {
     auto params = dictionary({strings("string", "filename", {"quad.ply"})}, data_dir);
     auto group = create_shape("plymesh", {}, false, params, loc);
     ASSERT_TRUE(group);
@@ -165,6 +165,16 @@ TEST(CreateShape, GzippedPlyMesh) {
     auto group = create_shape("plymesh", {}, false, params, loc);
     ASSERT_TRUE(group);
     expect_quad_ply(*group);
+}
+
+// The binary PLY of pbrt-v4's scene collection that made Assimp abort: its body starts with a
+// line-end byte.
+TEST(CreateShape, PlyMeshWhoseBodyStartsWithALineEnd) {
+    auto params = dictionary({strings("string", "filename", {"body_starts_with_newline.ply"})}, data_dir);
+    auto group = create_shape("plymesh", {}, false, params, loc);
+    ASSERT_TRUE(group);
+    EXPECT_EQ(group->triangle_count(), 1u);
+    EXPECT_NEAR(total_area(*group), 0.5, 1e-5);
 }
 
 TEST(CreateShape, PlyMeshErrors) {

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -190,6 +192,69 @@ inline RenderPair render_pair(const std::string &scene_path, const std::string &
         pair.runs[i] = read_rgb(out);
     }
     return pair;
+}
+
+struct PbrtAgreement {
+    double mean_relative_error = 0;
+    double mean_standard_error = 0; // of the renders' image mean, relative to the reference's
+    double worst_z = 0;
+    bool passes() const { return mean_relative_error < 0.01 && worst_z < 5.0; }
+};
+
+inline constexpr int kPbrtBlock = 16;
+
+// The reference's two halves, from its mean and half-difference layers.
+inline std::pair<RgbImage, RgbImage> reference_halves(const std::string &scene) {
+    const std::string path = data_path("pbrt-v4/" + scene + ".exr");
+    RgbImage plus = read_rgb(path), minus = plus;
+    const RgbImage difference = read_layer(path, "difference");
+    for (size_t i = 0; i < plus.rgb.size(); ++i) {
+        plus.rgb[i] += difference.rgb[i];
+        minus.rgb[i] -= difference.rgb[i];
+    }
+    return {plus, minus};
+}
+
+// `scene` (e.g. "hard/fog-point") names scenes/SCENE.pbrt and its pbrt-v4 reference
+// tests/data/pbrt-v4/SCENE.exr (scripts/make-pbrt-references.sh). The check is the one that
+// hard_transport_test.cpp states: image mean within 1%, every 16x16 block-channel |z| < 5.
+inline PbrtAgreement pbrt_agreement(const std::string &scene, const std::string &integrator, int spp,
+                                    const std::string &fault = "") {
+    std::string flat = scene;
+    for (char &ch : flat)
+        if (ch == '/') ch = '-';
+    const std::string dir = scratch_dir("pbrt-" + flat + "-" + integrator + (fault.empty() ? "" : "-" + fault));
+    const std::string environment = fault.empty() ? "" : "CAUSTICA_TEST_FAULT=" + fault;
+    const RenderPair pair = render_pair(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/" + scene + ".pbrt",
+                                        integrator, spp, 31, dir, environment);
+    const RgbImage(&runs)[2] = pair.runs;
+    const auto [ref_a, ref_b] = reference_halves(scene);
+    EXPECT_EQ(runs[0].width, ref_a.width);
+    EXPECT_EQ(runs[0].height, ref_a.height);
+
+    PbrtAgreement result;
+    const double mean = image_mean(runs[0], runs[1]), reference_mean = image_mean(ref_a, ref_b);
+    result.mean_relative_error = std::abs(mean - reference_mean) / reference_mean;
+
+    const std::vector<BlockEstimate> blocks = block_estimates(runs[0], runs[1], kPbrtBlock);
+    const std::vector<BlockEstimate> reference = block_estimates(ref_a, ref_b, kPbrtBlock);
+    const double k = correlation_factor(blocks), k_ref = correlation_factor(reference);
+    double mean_variance = 0; // the image mean is the average of the block-channel means
+    size_t worst = 0;
+    for (size_t i = 0; i < blocks.size(); ++i) {
+        const double var = k * blocks[i].variance_from_pixels + k_ref * reference[i].variance_from_pixels;
+        const double z = std::abs(blocks[i].mean - reference[i].mean) / std::sqrt(var + 1e-30);
+        if (z > result.worst_z) worst = i;
+        result.worst_z = std::max(result.worst_z, z);
+        mean_variance += k * blocks[i].variance_from_pixels;
+    }
+    result.mean_standard_error = std::sqrt(mean_variance) / double(blocks.size()) / reference_mean;
+    std::printf("%s %s%s: mean %.5f against pbrt-v4's %.5f (error %.2f%%, standard error %.2f%%), k %.2f, "
+                "k_ref %.2f, largest |z| %.2f (block-channel %zu: %.5g against %.5g)\n",
+                scene.c_str(), integrator.c_str(), fault.empty() ? "" : (" with fault " + fault).c_str(), mean, reference_mean,
+                100 * result.mean_relative_error, 100 * result.mean_standard_error, k, k_ref, result.worst_z, worst,
+                blocks[worst].mean, reference[worst].mean);
+    return result;
 }
 
 } // namespace caustica::testing

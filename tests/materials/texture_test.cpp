@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "geometry/interaction.h"
 #include "params/constant_textures.h"
+#include "textures/noise_textures.h"
 #include "textures/texture_factory.h"
 
 #include <gtest/gtest.h>
@@ -125,8 +126,73 @@ TEST_F(TextureTest, SpectrumTextures) {
     EXPECT_EQ(checker->evaluate(at_uv(1.5f, 0.5f), lambda)[0], 0);
 }
 
-TEST_F(TextureTest, UnsupportedTypesFallBackToHalf) {
-    EXPECT_FLOAT_EQ(eval_float("fbm", {}, at_uv(0.3f, 0.3f)), 0.5f);
+// Perlin noise vanishes on the integer lattice and varies smoothly between; the sums of
+// octaves follow from it. (Agreement with pbrt-v4's patterns is the render test
+// NoiseTexturesMatchPbrtV4.)
+TEST_F(TextureTest, NoiseTextures) {
+    for (Vec3f lattice : {Vec3f(0, 0, 0), Vec3f(3, -7, 12), Vec3f(-255, 256, 1000)})
+        EXPECT_EQ(perlin_noise(lattice), 0);
+    float largest = 0;
+    for (int i = 0; i < 1000; ++i) {
+        Vec3f p(0.37f * float(i), 0.11f * float(i) - 20, 0.053f * float(i));
+        float n = perlin_noise(p);
+        largest = std::max(largest, std::abs(n));
+        // Continuity: a step of 1e-3 changes it by at most the gradient bound times the step.
+        EXPECT_LT(std::abs(perlin_noise(p + Vec3f(1e-3f, 0, 0)) - n), 4e-3f);
+    }
+    EXPECT_LE(largest, 1.f);
+    EXPECT_GT(largest, 0.3f);
+    // One octave is the noise itself; turbulence adds 0.2 of the next octave's amplitude.
+    Vec3f p(0.3f, 1.7f, -2.2f);
+    EXPECT_FLOAT_EQ(fractional_brownian_motion(p, 0.5f, 1), perlin_noise(p));
+    EXPECT_FLOAT_EQ(turbulence(p, 0.5f, 1), std::abs(perlin_noise(p)) + 0.5f * 0.2f);
+    EXPECT_FLOAT_EQ(fractional_brownian_motion(p, 0.5f, 2),
+                    perlin_noise(p) + 0.5f * perlin_noise(1.99f * p));
+    // The texture types read "roughness" (omega) and "octaves" as pbrt-v4 does.
+    std::vector<ParsedParameter> two = {numbers("float", "roughness", {0.25}, 2),
+                                        numbers("integer", "octaves", {2}, 3)};
+    EXPECT_FLOAT_EQ(eval_float("fbm", two, at_uv(0, 0, p)),
+                    fractional_brownian_motion(p, 0.25f, 2));
+    EXPECT_FLOAT_EQ(eval_float("wrinkled", two, at_uv(0, 0, p)), turbulence(p, 0.25f, 2));
+    EXPECT_FLOAT_EQ(eval_float("windy", {}, at_uv(0, 0, p)),
+                    std::abs(fractional_brownian_motion(0.1f * p, 0.5f, 3)) *
+                        fractional_brownian_motion(p, 0.5f, 6));
+    // The texture's transform: texture space is the CTM's inverse image of render space.
+    EXPECT_FLOAT_EQ(eval_float("fbm", {}, at_uv(0, 0, 2.f * p), {}, Transform::scale(2, 2, 2)),
+                    fractional_brownian_motion(p, 0.5f, 8));
+    EXPECT_THROW(eval_float("fbm", {numbers("integer", "octaves", {-1}, 2)}, at_uv(0, 0)), InputError);
+}
+
+// Dots: about half the unit cells hold a dot of radius 0.35. As in pbrt-v4, the dots show
+// "outside" and the rest "inside" (its reader swaps the two; noise_textures.h).
+TEST_F(TextureTest, DotsAndDirectionMix) {
+    int in_dots = 0, cells_with_dots = 0;
+    const int n = 200;
+    for (int cell = 0; cell < n; ++cell) {
+        bool any = false;
+        for (int k = 0; k < 100; ++k) {
+            Vec2f st(float(cell) + (float(k % 10) + 0.5f) / 10 - 0.5f, (float(k / 10) + 0.5f) / 10 - 0.5f);
+            bool inside = inside_polka_dot(st);
+            in_dots += inside;
+            any = any || inside;
+            EXPECT_FLOAT_EQ(eval_float("dots", {}, at_uv(st.x, st.y)), inside ? 0.f : 1.f);
+        }
+        cells_with_dots += any;
+    }
+    EXPECT_GT(cells_with_dots, n / 4);
+    EXPECT_LT(cells_with_dots, 3 * n / 4);
+    // Each dot covers pi 0.35^2 = 0.385 of its cell.
+    EXPECT_NEAR(double(in_dots) / (100.0 * cells_with_dots), 0.385, 0.03);
+
+    // directionmix: tex1 where the normal is along "dir", tex2 where it is across.
+    std::vector<ParsedParameter> mix = {numbers("vector3", "dir", {0, 0, 1}, 2),
+                                        numbers("float", "tex1", {4}, 3), numbers("float", "tex2", {8}, 4)};
+    TextureEvalContext facing = at_uv(0, 0), edge_on = at_uv(0, 0), halfway = at_uv(0, 0);
+    edge_on.n = {1, 0, 0};
+    halfway.n = normalize(Vec3f(1, 0, 1));
+    EXPECT_FLOAT_EQ(eval_float("directionmix", mix, facing), 4);
+    EXPECT_FLOAT_EQ(eval_float("directionmix", mix, edge_on), 8);
+    EXPECT_NEAR(eval_float("directionmix", mix, halfway), 4 * 0.7071f + 8 * (1 - 0.7071f), 1e-4f);
 }
 
 TEST_F(TextureTest, Errors) {
