@@ -13,6 +13,17 @@ caustica_require(OpenEXR libopenexr-dev)
 caustica_require(OpenImageIO libopenimageio-dev)
 caustica_require(assimp libassimp-dev)
 caustica_require(ZLIB zlib1g-dev)
+# Debian 12's OpenSubdiv CMake package names static libraries the package does not ship, so
+# the shared library is found directly.
+find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h)
+find_library(OPENSUBDIV_CPU_LIBRARY osdCPU)
+if(NOT OPENSUBDIV_INCLUDE_DIR OR NOT OPENSUBDIV_CPU_LIBRARY)
+  message(FATAL_ERROR "Caustica needs OpenSubdiv: install the Debian package 'libosd-dev' "
+                      "(scripts/setup.sh installs everything).")
+endif()
+add_library(caustica_opensubdiv INTERFACE)
+target_include_directories(caustica_opensubdiv SYSTEM INTERFACE ${OPENSUBDIV_INCLUDE_DIR})
+target_link_libraries(caustica_opensubdiv INTERFACE ${OPENSUBDIV_CPU_LIBRARY})
 caustica_require(CLI11 libcli11-dev)
 caustica_require(flann libflann-dev)
 caustica_require(Threads libc6-dev)

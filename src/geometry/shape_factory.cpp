@@ -2,6 +2,7 @@
 
 #include "geometry/bilinear_mesh.h"
 #include "geometry/disk.h"
+#include "geometry/loop_subdivision.h"
 #include "geometry/mesh_file.h"
 #include "geometry/sphere.h"
 
@@ -93,6 +94,22 @@ std::shared_ptr<ShapeGroup> create_ply_mesh(const Transform &render_from_object,
                       params.location("filename"), "plymesh \"" + filename + "\"");
 }
 
+std::shared_ptr<ShapeGroup> create_loop_subdivision(const Transform &render_from_object,
+                                                    bool reverse_orientation,
+                                                    const ParameterDictionary &params,
+                                                    const SourceLocation &loc) {
+    std::vector<int> indices = params.get_int_array("indices");
+    std::vector<Vec3f> p = params.get_point3_array("P");
+    if (indices.empty()) throw InputError(loc, "loopsubdiv: vertex indices \"indices\" not given");
+    if (p.empty()) throw InputError(loc, "loopsubdiv: vertex positions \"P\" not given");
+    // pbrt-v4 reads "scheme" and ignores it: Loop is the only one.
+    params.get_one_string("scheme", "loop");
+    MeshData data = loop_subdivide(std::move(indices), p, params.get_one_int("levels", 3),
+                                   params.location("indices"));
+    return mesh_group("loopsubdiv", std::move(data), render_from_object, reverse_orientation,
+                      params.location("indices"), "loopsubdiv");
+}
+
 std::shared_ptr<ShapeGroup> create_bilinear_mesh(const Transform &render_from_object,
                                                  bool reverse_orientation,
                                                  const ParameterDictionary &params,
@@ -167,7 +184,9 @@ std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
     if (type == "sphere") return create_sphere(render_from_object, reverse_orientation, params, loc);
     if (type == "disk") return create_disk(render_from_object, reverse_orientation, params, loc);
     // pbrt-v4's other shapes, and pbrt-v3's quadrics that v4 dropped.
-    for (const char *unsupported : {"loopsubdiv", "curve", "cylinder", "cone", "paraboloid",
+    if (type == "loopsubdiv")
+        return create_loop_subdivision(render_from_object, reverse_orientation, params, loc);
+    for (const char *unsupported : {"curve", "cylinder", "cone", "paraboloid",
                                     "hyperboloid", "heightfield", "nurbs"})
         if (type == unsupported) {
             warning(loc, "shape \"" + type + "\" is not supported; skipped");
