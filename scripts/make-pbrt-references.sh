@@ -35,7 +35,8 @@ hard/narrow-line 4096
 hard/near-specular-glass 4096
 hard/skin-lens 32768
 hard/coated-low-roughness 4096
-textures/noise-textures 256"
+textures/noise-textures 256
+textures/bump-and-normal-map 256"
 
 want=("$@")
 while read -r scene spp; do

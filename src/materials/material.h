@@ -5,9 +5,12 @@
 #include "materials/bsdf.h"
 #include "spectral/sampled_wavelengths.h"
 
+#include <memory>
+
 namespace caustica {
 
 class Medium;
+class ShadingPerturbation;
 struct SurfaceInteraction;
 
 class Material {
@@ -54,12 +57,28 @@ class Material {
         (void)si, (void)lambda, (void)scratch;
         return interior_medium();
     }
+    // The material that scatters at si: itself, except for a mix, which chooses one there.
+    virtual const Material &resolve(const SurfaceInteraction &si) const {
+        (void)si;
+        return *this;
+    }
+
+    // Bump or normal mapping ("displacement", "normalmap"), which shade() applies to the
+    // shading frame before the BSDF is made; null when the material has neither.
+    const ShadingPerturbation *shading_perturbation() const { return shading_perturbation_.get(); }
+    void set_shading_perturbation(std::shared_ptr<const ShadingPerturbation> perturbation) {
+        shading_perturbation_ = std::move(perturbation);
+    }
+
+  private:
+    std::shared_ptr<const ShadingPerturbation> shading_perturbation_;
 };
 
 using MaterialPtr = std::shared_ptr<const Material>;
 
 // What a path meets at a surface point with a material: its BSDF, and (in si.interior) the
 // medium inside, which medium_after() needs when the path crosses into it. Both live in scratch.
+// A bump or normal map of the material (of the chosen one, for a mix) first tilts si.shading.
 BSDF shade(SurfaceInteraction &si, const SampledWavelengths &lambda, ScratchBuffer &scratch);
 
 } // namespace caustica

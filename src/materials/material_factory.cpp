@@ -8,6 +8,7 @@
 #include "materials/diffuse_transmission_material.h"
 #include "materials/disney_material.h"
 #include "materials/mix_material.h"
+#include "materials/shading_perturbation.h"
 #include "params/constant_textures.h"
 #include "params/parameters.h"
 #include "spectral/ior.h"
@@ -227,6 +228,27 @@ SpectrumTexturePtr read_reflectance(const ParameterDictionary &params, const Nam
                                        SpectrumType::Albedo, textures);
 }
 
+// pbrt-v4's "normalmap" (an image file) or "displacement" (a float texture); the normal map
+// wins when both are given, as in pbrt-v4.
+std::shared_ptr<const ShadingPerturbation> read_shading_perturbation(const ParameterDictionary &params,
+                                                                     const NamedTextures &textures) {
+    const std::string normal_map = params.get_one_string("normalmap", "");
+    if (!normal_map.empty()) {
+        if (params.has("displacement"))
+            warning(params.location("displacement"), "\"displacement\" is ignored where a \"normalmap\" "
+                                                     "is given, as in pbrt-v4");
+        try {
+            return ShadingPerturbation::normal_map(
+                read_linear_texels(params.file_path("normalmap", normal_map), 3));
+        } catch (const std::runtime_error &e) {
+            throw InputError(params.location("normalmap"), e.what());
+        }
+    }
+    if (FloatTexturePtr displacement = params.get_float_texture_or_null("displacement", textures))
+        return ShadingPerturbation::bump(std::move(displacement));
+    return nullptr;
+}
+
 } // namespace
 
 MaterialPtr create_material(const std::string &type, const ParameterDictionary &params,
@@ -272,6 +294,11 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         return std::make_shared<DiffuseMaterial>(read_reflectance(params, textures));
     } else {
         throw InputError(loc, "unknown material type " + quoted(type));
+    }
+    if (material) {
+        // The factory holds the only reference to the new material.
+        if (auto perturbation = read_shading_perturbation(params, textures))
+            std::const_pointer_cast<Material>(material)->set_shading_perturbation(std::move(perturbation));
     }
     params.report_unused();
     return material;

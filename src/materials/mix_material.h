@@ -21,6 +21,7 @@ class MixMaterial final : public Material {
                   ScratchBuffer &scratch) const override;
     // The material chosen at si.
     const Material &choose(const SurfaceInteraction &si) const;
+    const Material &resolve(const SurfaceInteraction &si) const override { return choose(si).resolve(si); }
 
     bool is_dispersive() const override { return either(&Material::is_dispersive); }
     bool has_specular_lobe() const override { return either(&Material::has_specular_lobe); }

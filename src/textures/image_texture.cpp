@@ -162,6 +162,10 @@ std::shared_ptr<const TexelImage> cached_texels(const std::string &path, int cha
 
 } // namespace
 
+std::shared_ptr<const TexelImage> read_linear_texels(const std::string &path, int channels) {
+    return cached_texels(path, channels, {Encoding::Linear});
+}
+
 ImageLookup read_image_lookup(TextureMapping2D mapping, const ParameterDictionary &params, int channels,
                               const SourceLocation &loc) {
     ImageLookup lookup;

@@ -72,6 +72,10 @@ class SpectrumImageTexture final : public SpectrumTexture {
     const RGBColorSpace *color_space_;
 };
 
+// The texels of the image file at `path`, `channels` of them (1 or 3), read as linear values
+// whatever the file's bit depth (pbrt-v4 reads normal maps so). Throws std::runtime_error.
+std::shared_ptr<const TexelImage> read_linear_texels(const std::string &path, int channels);
+
 // Reads an imagemap texture's parameters and its file (relative to the scene file), with
 // `channels` texels (1 for a float texture, 3 for a spectrum one), looked up through `mapping`.
 // Throws InputError at the parameter that is wrong or names an unreadable file.
