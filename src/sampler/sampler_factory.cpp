@@ -1,5 +1,6 @@
 #include "sampler/sampler_factory.h"
 
+#include "sampler/halton_sampler.h"
 #include "sampler/independent_sampler.h"
 #include "sampler/padded_sobol_sampler.h"
 #include "sampler/sobol_sampler.h"
@@ -47,7 +48,8 @@ void warn_if_not_power_of_two(const SourceLocation *loc, int spp) {
 } // namespace
 
 std::unique_ptr<Sampler> create_sampler(const std::string &type, const ParameterDictionary &params,
-                                        const SourceLocation &loc, int seed, int spp_override) {
+                                        const SourceLocation &loc, int seed, int spp_override,
+                                        Vec2i resolution) {
     seed = params.get_one_int("seed", seed);
     if (type == "independent") {
         int spp = spp_override > 0 ? spp_override : positive_count(params, "pixelsamples", 4);
@@ -64,21 +66,21 @@ std::unique_ptr<Sampler> create_sampler(const std::string &type, const Parameter
         }
         return std::make_unique<StratifiedSampler>(xs, ys, jitter, seed);
     }
-    const bool substitute = type == "halton" || type == "pmj02bn";
+    if (type == "halton") {
+        int spp = spp_override > 0 ? spp_override : positive_count(params, "pixelsamples", 16);
+        Randomization randomization = randomization_parameter(params, "permutedigits");
+        if (randomization == Randomization::FastOwen)
+            throw InputError(params.location("randomization"),
+                             "\"fastowen\" randomization is not supported by the halton sampler (as in pbrt-v4)");
+        return std::make_unique<HaltonSampler>(spp, resolution, seed, randomization);
+    }
+    const bool substitute = type == "pmj02bn";
     if (type == "zsobol" || type == "paddedsobol" || type == "sobol" || substitute) {
         int spp = spp_override > 0 ? spp_override : positive_count(params, "pixelsamples", 16);
-        // pbrt-v4's default is fastowen. Halton's (permutedigits) permutes Halton's digits; the
-        // zsobol standing in for it keeps fastowen unless the scene names a randomization.
-        // pmj02bn has no randomization parameter, so a stray one is reported as unused.
+        // pbrt-v4's default is fastowen. pmj02bn has no randomization parameter, so a stray one
+        // is reported as unused.
         Randomization randomization = Randomization::FastOwen;
-        if (type == "halton") {
-            if (params.has("randomization")) {
-                randomization = randomization_parameter(params, "");
-                if (randomization == Randomization::FastOwen)
-                    throw InputError(params.location("randomization"),
-                                     "\"fastowen\" randomization is not supported by the halton sampler");
-            }
-        } else if (type != "pmj02bn") {
+        if (type != "pmj02bn") {
             randomization = randomization_parameter(params, "fastowen");
         }
         if (type == "paddedsobol") return std::make_unique<PaddedSobolSampler>(spp, seed, randomization);

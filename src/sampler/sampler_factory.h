@@ -19,8 +19,10 @@ namespace caustica {
 // are not powers of two. The "seed" parameter overrides `seed`; spp_override > 0 (the command
 // line) replaces the sample count. Unknown types, unknown randomizations and non-positive
 // sample counts are InputErrors.
+// `resolution` is the film's (the halton sampler tiles the image with it).
 std::unique_ptr<Sampler> create_sampler(const std::string &type, const ParameterDictionary &params,
-                                        const SourceLocation &loc, int seed, int spp_override = 0);
+                                        const SourceLocation &loc, int seed, int spp_override = 0,
+                                        Vec2i resolution = {1280, 720});
 
 // What a scene without a Sampler directive renders with, as in pbrt-v4: "zsobol" with its
 // default randomization (fastowen) and 16 samples per pixel.

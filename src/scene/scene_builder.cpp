@@ -380,7 +380,8 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
                                   d.camera.loc);
     scene->sampler = d.sampler.type.empty()
                          ? create_default_sampler(int(ov.seed), ov.spp)
-                         : create_sampler(d.sampler.type, d.sampler.params, d.sampler.loc, int(ov.seed), ov.spp);
+                         : create_sampler(d.sampler.type, d.sampler.params, d.sampler.loc, int(ov.seed), ov.spp,
+                                          scene->film->resolution());
 
     NamedTextures textures;
     create_textures(d, textures);

@@ -1,3 +1,4 @@
+#include "sampler/halton_sampler.h"
 #include "sampler/independent_sampler.h"
 #include "sampler/padded_sobol_sampler.h"
 #include "sampler/sample_hash.h"
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <vector>
 
@@ -76,6 +78,8 @@ std::vector<std::unique_ptr<Sampler>> all_samplers(int seed) {
     // Without randomisation the global Sobol sampler ignores the seed, which the tests vary.
     s.push_back(std::make_unique<SobolSampler>(16, seed, Randomization::FastOwen));
     s.push_back(std::make_unique<SobolSampler>(16, seed, Randomization::Owen));
+    s.push_back(std::make_unique<HaltonSampler>(16, Vec2i{64, 48}, seed, Randomization::PermuteDigits));
+    s.push_back(std::make_unique<HaltonSampler>(8, Vec2i{300, 200}, seed, Randomization::Owen));
     return s;
 }
 
@@ -241,8 +245,7 @@ TEST(SamplerFactory, CreatesPbrtSamplers) {
     s->start_pixel_sample({0, 0}, 0);
     float u = s->get_1d();
     EXPECT_FLOAT_EQ(u * 6 - int(u * 6), 0.5f);  // no jitter: stratum centres
-    // The low-discrepancy samplers: pbrt's default of 16 samples; halton and pmj02bn are
-    // replaced by zsobol.
+    // The low-discrepancy samplers: pbrt's default of 16 samples; pmj02bn is replaced by zsobol.
     auto is_a = [](const std::unique_ptr<Sampler> &p, auto *type) {
         return dynamic_cast<std::remove_pointer_t<decltype(type)> *>(p.get()) != nullptr;
     };
@@ -253,7 +256,7 @@ TEST(SamplerFactory, CreatesPbrtSamplers) {
                   8);
     }
     EXPECT_TRUE(is_a(create_sampler("zsobol", dict({}), loc, 0), (ZSobolSampler *)nullptr));
-    EXPECT_TRUE(is_a(create_sampler("halton", dict({}), loc, 0), (ZSobolSampler *)nullptr));
+    EXPECT_TRUE(is_a(create_sampler("halton", dict({}), loc, 0), (HaltonSampler *)nullptr));
     EXPECT_TRUE(is_a(create_sampler("pmj02bn", dict({}), loc, 0), (ZSobolSampler *)nullptr));
     EXPECT_TRUE(is_a(create_sampler("paddedsobol", dict({}), loc, 0), (PaddedSobolSampler *)nullptr));
     EXPECT_TRUE(is_a(create_sampler("sobol", dict({}), loc, 0), (SobolSampler *)nullptr));
@@ -296,6 +299,8 @@ TEST(SamplerFactory, RandomizationParameterSelectsTheScramble) {
                 expected = std::make_unique<PaddedSobolSampler>(16, 3, r);
             else if (std::string(type) == "sobol")
                 expected = std::make_unique<SobolSampler>(16, 3, r);
+            else if (std::string(type) == "halton")
+                expected = std::make_unique<HaltonSampler>(16, Vec2i{1280, 720}, 3, r);
             else
                 expected = std::make_unique<ZSobolSampler>(16, 3, r);
             EXPECT_EQ(sequence(*made, {4, 7}, 2, 12), sequence(*expected, {4, 7}, 2, 12)) << type << name;
@@ -303,9 +308,12 @@ TEST(SamplerFactory, RandomizationParameterSelectsTheScramble) {
         EXPECT_THROW(create_sampler(type, dict({string_param("randomization", "scrambled")}), loc, 0),
                      InputError);
     }
-    // pbrt-v4's defaults: fastowen everywhere, also for the default sampler and the
-    // substitutes.
-    for (const char *type : {"zsobol", "halton", "pmj02bn"})
+    // pbrt-v4's defaults: permutedigits for halton, fastowen everywhere else, also for the
+    // default sampler and the pmj02bn substitute.
+    EXPECT_EQ(sequence(*create_sampler("halton", dict({}), loc, 3), {1, 2}, 0, 9),
+              sequence(*std::make_unique<HaltonSampler>(16, Vec2i{1280, 720}, 3, Randomization::PermuteDigits),
+                       {1, 2}, 0, 9));
+    for (const char *type : {"zsobol", "pmj02bn"})
         EXPECT_EQ(sequence(*create_sampler(type, dict({}), loc, 3), {1, 2}, 0, 9),
                   sequence(*std::make_unique<ZSobolSampler>(16, 3, Randomization::FastOwen), {1, 2}, 0, 9));
     EXPECT_EQ(sequence(*create_sampler("paddedsobol", dict({}), loc, 3), {1, 2}, 0, 9),
@@ -324,11 +332,11 @@ TEST(SamplerFactory, WarnsAboutSubstitutesAndNonPowerOfTwoCounts) {
         create_sampler(type, dict(std::move(params)), loc, 0, spp);
         return testing::internal::GetCapturedStderr();
     };
-    std::string halton = warnings_of("halton", {}, 0);
-    EXPECT_NE(halton.find("scene.pbrt:3:1: warning"), std::string::npos) << halton;
-    EXPECT_NE(halton.find("\"halton\""), std::string::npos) << halton;
-    EXPECT_NE(halton.find("\"zsobol\""), std::string::npos) << halton;
-    EXPECT_NE(warnings_of("pmj02bn", {}, 0).find("\"zsobol\""), std::string::npos);
+    std::string pmj = warnings_of("pmj02bn", {}, 0);
+    EXPECT_NE(pmj.find("scene.pbrt:3:1: warning"), std::string::npos) << pmj;
+    EXPECT_NE(pmj.find("\"pmj02bn\""), std::string::npos) << pmj;
+    EXPECT_NE(pmj.find("\"zsobol\""), std::string::npos) << pmj;
+    EXPECT_EQ(warnings_of("halton", {integer_param("pixelsamples", 12)}, 0), "");
     EXPECT_EQ(warnings_of("zsobol", {}, 0), "");
     EXPECT_EQ(warnings_of("zsobol", {integer_param("pixelsamples", 64)}, 0), "");
     EXPECT_NE(warnings_of("zsobol", {integer_param("pixelsamples", 12)}, 0).find("power-of-two"),
@@ -344,4 +352,51 @@ TEST(SamplerFactory, RejectsBadInput) {
                  InputError);
     EXPECT_THROW(create_sampler("stratified", dict({integer_param("xsamples", -2)}), loc, 0),
                  InputError);
+}
+
+// pbrt-v4's Halton sampler gives each pixel of the tile its own subsequence: a pixel's
+// consecutive samples step the base-2 index by an odd number and the base-3 index by a power of
+// two, so n consecutive samples fall in n different strata of x (n a power of two) and of y
+// (n a power of three) within the pixel.
+TEST(HaltonSampler, PixelSamplesAreStratifiedWithinThePixel) {
+    for (Randomization r : {Randomization::PermuteDigits, Randomization::Owen, Randomization::None}) {
+        HaltonSampler s(16, Vec2i{20, 12}, 5, r);
+        for (int y = 0; y < 12; ++y)
+            for (int x = 0; x < 20; ++x) {
+                std::set<int> x_strata, y_strata;
+                for (int i = 0; i < 4; ++i) {
+                    s.start_pixel_sample({x, y}, i);
+                    s.get_1d();
+                    x_strata.insert(int(s.get_pixel_2d().x * 4));
+                }
+                for (int i = 0; i < 9; ++i) {
+                    s.start_pixel_sample({x, y}, i);
+                    s.get_1d();
+                    y_strata.insert(int(s.get_pixel_2d().y * 9));
+                }
+                EXPECT_EQ(x_strata.size(), 4u);
+                EXPECT_EQ(y_strata.size(), 9u);
+            }
+    }
+}
+
+// Every dimension is uniform: its values' mean and their fraction below 1/2 match a uniform
+// variable's within 4 standard errors (of independent samples; stratification only lowers the
+// error), and consecutive dimensions are uncorrelated.
+TEST(HaltonSampler, DimensionsAreUniformAndUncorrelated) {
+    HaltonSampler s(16, Vec2i{8, 8}, 9, Randomization::PermuteDigits);
+    const int n = 4096;
+    for (int d = 0; d < 40; d += 3) {
+        double sum = 0, below = 0, product = 0;
+        for (int i = 0; i < n; ++i) {
+            s.start_pixel_sample({i % 8, (i / 8) % 8}, i / 64, d);
+            float a = s.get_1d(), b = s.get_1d();
+            sum += a;
+            below += a < 0.5f;
+            product += (a - 0.5) * (b - 0.5);
+        }
+        EXPECT_NEAR(sum / n, 0.5, 4 * std::sqrt(1.0 / 12 / n)) << d;
+        EXPECT_NEAR(below / n, 0.5, 4 * 0.5 / std::sqrt(double(n))) << d;
+        EXPECT_NEAR(product / n, 0, 4 * (1.0 / 12) / std::sqrt(double(n))) << d;
+    }
 }
