@@ -1,6 +1,7 @@
 #include "geometry/shape_factory.h"
 
 #include "geometry/bilinear_mesh.h"
+#include "geometry/cylinder.h"
 #include "geometry/disk.h"
 #include "geometry/loop_subdivision.h"
 #include "geometry/mesh_file.h"
@@ -168,6 +169,25 @@ std::shared_ptr<ShapeGroup> create_disk(const Transform &render_from_object,
     return group;
 }
 
+std::shared_ptr<ShapeGroup> create_cylinder(const Transform &render_from_object,
+                                            bool reverse_orientation, const ParameterDictionary &params,
+                                            const SourceLocation &loc) {
+    float radius = params.get_one_float("radius", 1);
+    float z_min = params.get_one_float("zmin", -1);
+    float z_max = params.get_one_float("zmax", 1);
+    float phi_max = params.get_one_float("phimax", 360);
+    if (!(radius > 0) || !(z_max != z_min) || !(phi_max > 0) || !std::isfinite(radius) ||
+        !std::isfinite(z_min) || !std::isfinite(z_max)) {
+        warning(loc, "cylinder: no surface (radius, zmin..zmax or phimax is empty); skipped");
+        return nullptr;
+    }
+    auto group = std::make_shared<ShapeGroup>();
+    group->type = "cylinder";
+    group->analytic = std::make_shared<Cylinder>(render_from_object, reverse_orientation, radius,
+                                                 z_min, z_max, phi_max);
+    return group;
+}
+
 } // namespace
 
 std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
@@ -183,10 +203,12 @@ std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
         return create_bilinear_mesh(render_from_object, reverse_orientation, params, loc);
     if (type == "sphere") return create_sphere(render_from_object, reverse_orientation, params, loc);
     if (type == "disk") return create_disk(render_from_object, reverse_orientation, params, loc);
+    if (type == "cylinder")
+        return create_cylinder(render_from_object, reverse_orientation, params, loc);
     // pbrt-v4's other shapes, and pbrt-v3's quadrics that v4 dropped.
     if (type == "loopsubdiv")
         return create_loop_subdivision(render_from_object, reverse_orientation, params, loc);
-    for (const char *unsupported : {"curve", "cylinder", "cone", "paraboloid",
+    for (const char *unsupported : {"curve", "cone", "paraboloid",
                                     "hyperboloid", "heightfield", "nurbs"})
         if (type == unsupported) {
             warning(loc, "shape \"" + type + "\" is not supported; skipped");
