@@ -1,4 +1,4 @@
-// The caustica command: `caustica render SCENE ...`, `info`, `diff` and `compare`.
+// The caustica command: `caustica render SCENE ...`, `info`, `diff`, `merge` and `compare`.
 #include "cli/commands.h"
 #include "core/error.h"
 
@@ -25,6 +25,13 @@ int main(int argc, char **argv) {
         ->check(CLI::Range(1, 4096));
     render_cmd->add_option("--seed", render.seed, "Random seed");
     render_cmd->add_option("--resolution", render.resolution, "Image size WxH");
+    auto *crop = render_cmd->add_option("--cropwindow", render.crop_window,
+                                        "Render only this part of the image: x0 x1 y0 y1 in [0, 1] (as pbrt-v4)")
+                     ->expected(4);
+    auto *bounds = render_cmd->add_option("--pixelbounds", render.pixel_bounds,
+                                          "Render only these pixels: x0 x1 y0 y1, ends exclusive (as pbrt-v4)")
+                       ->expected(4);
+    crop->excludes(bounds);
     render_cmd->add_option("-o,--output", render.exr_path, "Output image (.exr, or .png)");
     render_cmd->add_option("--png", render.png_path, "Also write an 8-bit sRGB PNG here");
     render_cmd->add_option("--stats-json", render.stats_json, "Write render statistics as JSON");
@@ -54,6 +61,13 @@ int main(int argc, char **argv) {
     diff_cmd->add_option("reference", diff.reference_path, "Reference (.exr)")->required();
     diff_cmd->add_option("--threshold", diff.threshold, "Exit with status 1 when the relative MSE exceeds this")
         ->check(CLI::NonNegativeNumber);
+
+    MergeCommandOptions merge;
+    CLI::App *merge_cmd = app.add_subcommand(
+        "merge", "Combine renders of parts of a frame, or of one part with different seeds, weighted by their "
+                 "sample counts");
+    merge_cmd->add_option("images", merge.input_paths, "Images written by caustica render (.exr)")->required();
+    merge_cmd->add_option("-o,--output", merge.output_path, "The merged image (.exr)")->required();
 
     CompareCommandOptions compare;
     CLI::App *compare_cmd = app.add_subcommand(
@@ -86,6 +100,7 @@ int main(int argc, char **argv) {
         if (*render_cmd) return run_render(render);
         if (*info_cmd) return run_info(info_scene);
         if (*diff_cmd) return run_diff(diff);
+        if (*merge_cmd) return run_merge(merge);
         if (*compare_cmd) return run_compare(compare);
     } catch (const InputError &e) {
         std::fprintf(stderr, "%s\n", e.what());

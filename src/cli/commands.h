@@ -16,6 +16,8 @@ struct RenderCommandOptions {
     int threads = 0;            // 0: all cores
     uint64_t seed = 0;
     std::string resolution;     // "WxH", empty: the scene's
+    std::vector<float> crop_window; // x0 x1 y0 y1, empty: the Film's
+    std::vector<int> pixel_bounds;  // x0 x1 y0 y1, empty: the Film's
     std::string exr_path;       // empty: the Film "filename"
     std::string png_path;       // empty: no PNG
     std::string stats_json;     // empty: no statistics file
@@ -54,6 +56,13 @@ ImageDifference image_difference(const Image &image, const Image &reference);
 
 int run_render(const RenderCommandOptions &options);
 int run_diff(const DiffCommandOptions &options);
+
+struct MergeCommandOptions {
+    std::vector<std::string> input_paths;
+    std::string output_path;
+};
+// cli/merge_command.h
+int run_merge(const MergeCommandOptions &options);
 int run_compare(const CompareCommandOptions &options);
 int run_info(const std::string &scene_path);
 

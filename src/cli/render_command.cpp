@@ -82,6 +82,8 @@ int run_render(const RenderCommandOptions &options) {
     overrides.wavelength = options.wavelength;
     overrides.single_wavelength = options.single_wavelength;
     overrides.spectral = options.spectral;
+    overrides.crop_window = options.crop_window;
+    overrides.pixel_bounds = options.pixel_bounds;
     if (!options.resolution.empty()) parse_resolution(options.resolution, &overrides.width, &overrides.height);
     if (options.wavelength != 0 && (options.wavelength < LambdaMin || options.wavelength > LambdaMax))
         throw InputError("--wavelength must lie in [360, 830] nm");

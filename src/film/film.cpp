@@ -196,21 +196,48 @@ CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filt
 
 namespace {
 
-PixelBounds read_pixel_bounds(const ParameterDictionary &params, Vec2i full, const SourceLocation &loc) {
+// pbrt-v4's crop window: each range is ordered and clamped to [0, 1]; the first pixel is the one
+// whose left/top edge is at or after the window's start.
+PixelBounds crop_window_bounds(const std::vector<float> &cw, Vec2i full) {
+    float x0 = clamp(std::min(cw[0], cw[1]), 0.f, 1.f), x1 = clamp(std::max(cw[0], cw[1]), 0.f, 1.f);
+    float y0 = clamp(std::min(cw[2], cw[3]), 0.f, 1.f), y1 = clamp(std::max(cw[2], cw[3]), 0.f, 1.f);
+    return {{int(std::ceil(full.x * x0)), int(std::ceil(full.y * y0))},
+            {int(std::ceil(full.x * x1)), int(std::ceil(full.y * y1))}};
+}
+
+PixelBounds clamp_to_image(PixelBounds b, Vec2i full) {
+    return {{std::max(b.min.x, 0), std::max(b.min.y, 0)}, {std::min(b.max.x, full.x), std::min(b.max.y, full.y)}};
+}
+
+PixelBounds read_pixel_bounds(const ParameterDictionary &params, Vec2i full, const SourceLocation &loc,
+                              const FilmOverrides &overrides) {
     PixelBounds bounds{{0, 0}, full};
-    auto clamp_to_image = [&](PixelBounds b, const std::string &name) {
-        PixelBounds c{{std::max(b.min.x, 0), std::max(b.min.y, 0)},
-                      {std::min(b.max.x, full.x), std::min(b.max.y, full.y)}};
-        if (!(c == b)) warning(params.location(name), "\"" + name + "\" extends beyond the image; clamping it");
-        return c;
-    };
+    if (!overrides.crop_window.empty() || !overrides.pixel_bounds.empty()) {
+        // The command line's choice replaces the file's.
+        if (!overrides.crop_window.empty()) {
+            if (overrides.crop_window.size() != 4)
+                throw InputError("--cropwindow needs 4 values (x0 x1 y0 y1)");
+            bounds = crop_window_bounds(overrides.crop_window, full);
+        } else {
+            const std::vector<int> &pb = overrides.pixel_bounds;
+            if (pb.size() != 4) throw InputError("--pixelbounds needs 4 values (x0 x1 y0 y1)");
+            PixelBounds given{{pb[0], pb[2]}, {pb[1], pb[3]}};
+            bounds = clamp_to_image(given, full);
+            if (!(bounds == given)) warning("--pixelbounds extends beyond the image; clamping it");
+        }
+        if (bounds.empty()) throw InputError("the pixel bounds given on the command line are empty");
+        return bounds;
+    }
     std::vector<int> pb = params.get_int_array("pixelbounds");
     std::vector<float> cw = params.get_float_array("cropwindow");
     if (!pb.empty()) {
         if (pb.size() != 4)
             throw InputError(params.location("pixelbounds"),
                              "\"pixelbounds\" needs 4 values (x0 x1 y0 y1), got " + std::to_string(pb.size()));
-        bounds = clamp_to_image({{pb[0], pb[2]}, {pb[1], pb[3]}}, "pixelbounds");
+        PixelBounds given{{pb[0], pb[2]}, {pb[1], pb[3]}};
+        bounds = clamp_to_image(given, full);
+        if (!(bounds == given))
+            warning(params.location("pixelbounds"), "\"pixelbounds\" extends beyond the image; clamping it");
     }
     if (!cw.empty()) {
         if (cw.size() != 4)
@@ -219,12 +246,7 @@ PixelBounds read_pixel_bounds(const ParameterDictionary &params, Vec2i full, con
         if (!pb.empty())
             warning(params.location("cropwindow"), "both \"pixelbounds\" and \"cropwindow\" are given; "
                                                    "using the crop window");
-        // pbrt-v4: each range is ordered and clamped to [0, 1]; the first pixel is the one
-        // whose left/top edge is at or after the window's start.
-        float x0 = clamp(std::min(cw[0], cw[1]), 0.f, 1.f), x1 = clamp(std::max(cw[0], cw[1]), 0.f, 1.f);
-        float y0 = clamp(std::min(cw[2], cw[3]), 0.f, 1.f), y1 = clamp(std::max(cw[2], cw[3]), 0.f, 1.f);
-        bounds = {{int(std::ceil(full.x * x0)), int(std::ceil(full.y * y0))},
-                  {int(std::ceil(full.x * x1)), int(std::ceil(full.y * y1))}};
+        bounds = crop_window_bounds(cw, full);
     }
     if (bounds.empty()) throw InputError(loc, "the film's pixel bounds (crop window) are empty");
     return bounds;
@@ -234,7 +256,7 @@ PixelBounds read_pixel_bounds(const ParameterDictionary &params, Vec2i full, con
 
 std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictionary &params,
                                   const RGBColorSpace *color_space, std::unique_ptr<Filter> filter,
-                                  const SourceLocation &loc, Vec2i resolution_override,
+                                  const SourceLocation &loc, const FilmOverrides &overrides,
                                   float exposure_time) {
     if (type == "gbuffer" || type == "spectral") {
         warning(loc, "the \"" + type + "\" film is written as an \"rgb\" film (RGB channels only)");
@@ -251,11 +273,11 @@ std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictio
     const RGBColorSpace &output = color_space ? *color_space : RGBColorSpace::srgb();
 
     Vec2i full{params.get_one_int("xresolution", 1280), params.get_one_int("yresolution", 720)};
-    if (resolution_override.x > 0) full.x = resolution_override.x;
-    if (resolution_override.y > 0) full.y = resolution_override.y;
+    if (overrides.resolution.x > 0) full.x = overrides.resolution.x;
+    if (overrides.resolution.y > 0) full.y = overrides.resolution.y;
     if (full.x < 1) throw InputError(params.location("xresolution"), "\"xresolution\" must be positive");
     if (full.y < 1) throw InputError(params.location("yresolution"), "\"yresolution\" must be positive");
-    PixelBounds bounds = read_pixel_bounds(params, full, loc);
+    PixelBounds bounds = read_pixel_bounds(params, full, loc, overrides);
 
     std::string filename = params.get_one_string("filename", "");
     if (filename.empty()) filename = "pbrt.exr";

@@ -159,11 +159,19 @@ CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filt
 // "pixelbounds", "iso" (100), "whitebalance" (0: none), "sensor" ("cie1931"; others warn and use
 // it), "maxcomponentvalue" (infinity), "savefp16" (false here: Caustica writes full floats
 // unless asked). exposure_time is the camera's shutter interval (camera_exposure_time()).
-// resolution_override components > 0 replace the resolution (the command line). A null
-// color_space means sRGB.
+// What the command line sets in place of the Film's parameters: resolution components > 0, and
+// a crop window (x0 x1 y0 y1 in [0, 1]) or pixel bounds (x0 x1 y0 y1 in pixels) when not empty,
+// as pbrt-v4's --cropwindow and --pixelbounds.
+struct FilmOverrides {
+    Vec2i resolution{0, 0};
+    std::vector<float> crop_window;
+    std::vector<int> pixel_bounds;
+};
+
+// A null color_space means sRGB.
 std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictionary &params,
                                   const RGBColorSpace *color_space, std::unique_ptr<Filter> filter,
-                                  const SourceLocation &loc, Vec2i resolution_override = {0, 0},
+                                  const SourceLocation &loc, const FilmOverrides &overrides = {},
                                   float exposure_time = 1);
 
 } // namespace caustica

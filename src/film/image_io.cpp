@@ -119,7 +119,7 @@ void write_exr(const std::string &path, const Image &image,
     });
 }
 
-Image read_exr(const std::string &path) {
+Image read_exr(const std::string &path, std::map<std::string, std::string> *metadata) {
     try {
         Imf::InputFile file(path.c_str());
         const Imf::Header &header = file.header();
@@ -137,8 +137,24 @@ Image read_exr(const std::string &path) {
         for (int c = 0; c < (grey ? 1 : 3); ++c)
             fb.insert(grey ? "Y" : names[c],
                       Imf::Slice::Make(Imf::FLOAT, image.rgb.data() + c, data, 3 * sizeof(float)));
+        // Layers: every NAME with NAME.R, NAME.G and NAME.B channels.
+        for (auto it = channels.begin(); it != channels.end(); ++it) {
+            std::string name = it.name();
+            if (name.size() < 3 || name.compare(name.size() - 2, 2, ".R") != 0) continue;
+            std::string layer = name.substr(0, name.size() - 2);
+            if (!channels.findChannel(layer + ".G") || !channels.findChannel(layer + ".B")) continue;
+            image.layers.push_back({layer, std::vector<float>(image.rgb.size())});
+        }
+        for (Image::Layer &layer : image.layers)
+            for (int c = 0; c < 3; ++c)
+                fb.insert(layer.name + "." + names[c],
+                          Imf::Slice::Make(Imf::FLOAT, layer.rgb.data() + c, data, 3 * sizeof(float)));
         file.setFrameBuffer(fb);
         file.readPixels(data.min.y, data.max.y);
+        if (metadata)
+            for (auto it = header.begin(); it != header.end(); ++it)
+                if (auto *text = dynamic_cast<const Imf::StringAttribute *>(&it.attribute()))
+                    (*metadata)[it.name()] = text->value();
         if (grey)
             for (size_t i = 0; i < image.rgb.size(); i += 3) image.rgb[i + 1] = image.rgb[i + 2] = image.rgb[i];
         return image;

@@ -25,8 +25,9 @@ void write_exr(const std::string &path, const Image &image,
 void write_png(const std::string &path, const Image &image);
 
 // The R, G, B channels of an OpenEXR file as floats (a luminance-only "Y" file is read as
-// grey); origin and full_resolution come from its data and display windows.
-Image read_exr(const std::string &path);
+// grey), and its layers NAME.R/G/B; origin and full_resolution come from its data and display
+// windows. With `metadata`, its string attributes too.
+Image read_exr(const std::string &path, std::map<std::string, std::string> *metadata = nullptr);
 
 // The sRGB transfer curve (IEC 61966-2-1) from linear to encoded values, for values in [0, 1].
 float srgb_encode(float linear);

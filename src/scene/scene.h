@@ -53,6 +53,8 @@ struct RenderOverrides {
     float wavelength = 0;       // > 0: monochromatic rendering at this wavelength (nm)
     bool single_wavelength = false; // one wavelength per path instead of hero sampling
     bool spectral = false;      // sample wavelengths even for an achromatic scene
+    std::vector<float> crop_window; // x0 x1 y0 y1 in [0, 1]; empty: the Film's
+    std::vector<int> pixel_bounds;  // x0 x1 y0 y1 in pixels; empty: the Film's
 };
 
 class Scene {

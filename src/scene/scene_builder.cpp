@@ -371,7 +371,8 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     std::unique_ptr<Filter> filter =
         create_filter(d.filter.type.empty() ? "gaussian" : d.filter.type, d.filter.params, d.filter.loc);
     scene->film = create_film(d.film.type.empty() ? "rgb" : d.film.type, d.film.params, d.color_space,
-                              std::move(filter), d.film.loc, Vec2i{ov.width, ov.height},
+                              std::move(filter), d.film.loc,
+                              FilmOverrides{Vec2i{ov.width, ov.height}, ov.crop_window, ov.pixel_bounds},
                               camera_exposure_time(d.camera.params, d.camera.loc));
     scene->film->set_monochromatic(ov.wavelength > 0);
     scene->output_filename = scene->film->filename();

@@ -99,7 +99,7 @@ TEST(Film, ImagingRatioScalesTheImage) {
     auto f = create_film("rgb", dict({number_param("integer", "xresolution", {2}),
                                       number_param("integer", "yresolution", {2}),
                                       number_param("float", "iso", {400})}),
-                         nullptr, std::make_unique<BoxFilter>(), {}, {0, 0}, 0.5f);
+                         nullptr, std::make_unique<BoxFilter>(), {}, {}, 0.5f);
     add_spectrum(*f, d65, 1024);
     expect_grey(f->get_image(1), 2, 5e-3);
 }
