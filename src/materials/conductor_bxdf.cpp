@@ -4,6 +4,10 @@
 
 namespace caustica {
 
+SampledSpectrum ConductorBxDF::fresnel(float cos_i) const {
+    return film_.present() ? film_.over_conductor(cos_i, eta_, k_) : fresnel_conductor(cos_i, eta_, k_);
+}
+
 SampledSpectrum ConductorBxDF::f(Vec3f wo, Vec3f wi, TransportMode) const {
     if (!same_hemisphere(wo, wi) || distribution_.effectively_smooth()) return {};
     float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
@@ -11,8 +15,7 @@ SampledSpectrum ConductorBxDF::f(Vec3f wo, Vec3f wi, TransportMode) const {
     Vec3f wm = wi + wo;
     if (length_squared(wm) == 0) return {};
     wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
-    SampledSpectrum fresnel = fresnel_conductor(abs_dot(wo, wm), eta_, k_);
-    return fresnel * (distribution_.D(wm) * distribution_.G(wo, wi) / (4 * cos_o * cos_i));
+    return fresnel(abs_dot(wo, wm)) * (distribution_.D(wm) * distribution_.G(wo, wi) / (4 * cos_o * cos_i));
 }
 
 std::optional<BSDFSample> ConductorBxDF::sample_f(Vec3f wo, float, Vec2f u, TransportMode,
@@ -24,7 +27,7 @@ std::optional<BSDFSample> ConductorBxDF::sample_f(Vec3f wo, float, Vec2f u, Tran
         float cos_i = std::abs(wi.z);
         if (cos_i == 0) return {};
         BSDFSample s;
-        s.f = fresnel_conductor(cos_i, eta_, k_) / cos_i;
+        s.f = fresnel(cos_i) / cos_i;
         s.wi = wi;
         s.pdf = 1;
         s.flags = BxDFSpecularReflection;
@@ -40,7 +43,7 @@ std::optional<BSDFSample> ConductorBxDF::sample_f(Vec3f wo, float, Vec2f u, Tran
     float cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
     if (cos_i == 0 || pdf == 0) return {};
     BSDFSample s;
-    s.f = fresnel_conductor(abs_dot(wo, wm), eta_, k_) *
+    s.f = fresnel(abs_dot(wo, wm)) *
           (distribution_.D(wm) * distribution_.G(wo, wi) / (4 * cos_o * cos_i));
     s.wi = wi;
     s.pdf = pdf;

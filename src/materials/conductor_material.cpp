@@ -19,11 +19,27 @@ ConductorIndex conductor_index(const SpectrumTexturePtr &eta, const SpectrumText
     return index;
 }
 
+ThinFilm FilmLayer::at(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const {
+    ThinFilm film;
+    if (!thickness) return film;
+    film.thickness_nm = std::max(thickness->evaluate(ctx), 0.f);
+    if (!film.present()) return film;
+    film.eta = eta->sample(lambda);
+    for (int i = 0; i < NumWavelengths; ++i) film.lambda[i] = lambda[i];
+    return film;
+}
+
+bool FilmLayer::may_be_present() const {
+    if (!thickness) return false;
+    const float *constant = thickness->constant_value();
+    return !constant || *constant > 0;
+}
+
 BSDF ConductorMaterial::get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                                  ScratchBuffer &scratch) const {
     const TextureEvalContext ctx(si);
     const ConductorIndex index = conductor_index(eta_, k_, reflectance_, ctx, lambda);
-    auto *bxdf = scratch.make<ConductorBxDF>(roughness_.distribution(ctx), index.eta, index.k);
+    auto *bxdf = scratch.make<ConductorBxDF>(roughness_.distribution(ctx), index.eta, index.k, film_.at(ctx, lambda));
     return BSDF(si.shading.n, si.shading.dpdu, bxdf);
 }
 

@@ -7,6 +7,8 @@
 
 #include "materials/material.h"
 #include "materials/microfacet_roughness.h"
+#include "materials/thin_film.h"
+#include "spectral/spectrum.h"
 
 namespace caustica {
 
@@ -22,19 +24,30 @@ ConductorIndex conductor_index(const SpectrumTexturePtr &eta, const SpectrumText
                                const SpectrumTexturePtr &reflectance, const TextureEvalContext &ctx,
                                const SampledWavelengths &lambda);
 
+// A thin film over a surface (thin_film.h), as materials declare it: "filmthickness" in nm (a
+// float texture; 0, the default, is no film) and "filmeta" (the film's index, default 1.33).
+struct FilmLayer {
+    FloatTexturePtr thickness;
+    SpectrumPtr eta;
+    // The film at a surface point for the path's wavelengths (absent where the thickness is 0).
+    ThinFilm at(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const;
+    bool may_be_present() const;
+};
+
 class ConductorMaterial final : public Material {
   public:
     // Either eta and k, or reflectance (the others null).
     ConductorMaterial(SpectrumTexturePtr eta, SpectrumTexturePtr k, SpectrumTexturePtr reflectance,
-                      MicrofacetRoughness roughness)
+                      MicrofacetRoughness roughness, FilmLayer film = {})
         : eta_(std::move(eta)), k_(std::move(k)), reflectance_(std::move(reflectance)),
-          roughness_(std::move(roughness)) {}
+          roughness_(std::move(roughness)), film_(std::move(film)) {}
     BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                   ScratchBuffer &scratch) const override;
     bool has_specular_lobe() const override { return roughness_.may_be_smooth(); }
     bool forms_caustics() const override { return roughness_.may_focus_light(); }
     bool has_non_specular_lobe() const override { return roughness_.may_be_rough(); }
     bool is_wavelength_independent() const override {
+        if (film_.may_be_present()) return false; // interference depends on the wavelength
         for (const SpectrumTexturePtr &t : {eta_, k_, reflectance_})
             if (t && !t->is_wavelength_independent()) return false;
         return true;
@@ -43,6 +56,7 @@ class ConductorMaterial final : public Material {
   private:
     SpectrumTexturePtr eta_, k_, reflectance_;
     MicrofacetRoughness roughness_;
+    FilmLayer film_;
 };
 
 } // namespace caustica

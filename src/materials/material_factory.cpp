@@ -159,10 +159,21 @@ ConductorIndex read_conductor_index(const ParameterDictionary &params, const Nam
     return c;
 }
 
+// An interference film: "filmthickness" (nm) and "filmeta".
+FilmLayer read_film(const ParameterDictionary &params, const NamedTextures &textures) {
+    FilmLayer film;
+    film.thickness = params.get_float_texture_or_null("filmthickness", textures);
+    if (!film.thickness) return film;
+    check_non_negative_texture(params, "filmthickness", film.thickness);
+    film.eta = params.get_one_spectrum("filmeta", std::make_shared<ConstantSpectrum>(1.33f), SpectrumType::Unbounded);
+    check_spectrum(params, "filmeta", *film.eta, false, "a positive index of refraction");
+    return film;
+}
+
 MaterialPtr create_conductor(const ParameterDictionary &params, const NamedTextures &textures) {
     ConductorIndex c = read_conductor_index(params, textures);
     MicrofacetRoughness roughness = read_roughness(params, textures);
-    return std::make_shared<ConductorMaterial>(c.eta, c.k, c.reflectance, roughness);
+    return std::make_shared<ConductorMaterial>(c.eta, c.k, c.reflectance, roughness, read_film(params, textures));
 }
 
 // The coat and slab of "coateddiffuse" / "coatedconductor"; the coat's parameters carry the
