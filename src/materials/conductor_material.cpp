@@ -19,22 +19,6 @@ ConductorIndex conductor_index(const SpectrumTexturePtr &eta, const SpectrumText
     return index;
 }
 
-ThinFilm FilmLayer::at(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const {
-    ThinFilm film;
-    if (!thickness) return film;
-    film.thickness_nm = std::max(thickness->evaluate(ctx), 0.f);
-    if (!film.present()) return film;
-    film.eta = eta->sample(lambda);
-    for (int i = 0; i < NumWavelengths; ++i) film.lambda[i] = lambda[i];
-    return film;
-}
-
-bool FilmLayer::may_be_present() const {
-    if (!thickness) return false;
-    const float *constant = thickness->constant_value();
-    return !constant || *constant > 0;
-}
-
 BSDF ConductorMaterial::get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                                  ScratchBuffer &scratch) const {
     const TextureEvalContext ctx(si);

@@ -8,7 +8,6 @@
 #include "materials/material.h"
 #include "materials/microfacet_roughness.h"
 #include "materials/thin_film.h"
-#include "spectral/spectrum.h"
 
 namespace caustica {
 
@@ -23,16 +22,6 @@ struct ConductorIndex {
 ConductorIndex conductor_index(const SpectrumTexturePtr &eta, const SpectrumTexturePtr &k,
                                const SpectrumTexturePtr &reflectance, const TextureEvalContext &ctx,
                                const SampledWavelengths &lambda);
-
-// A thin film over a surface (thin_film.h), as materials declare it: "filmthickness" in nm (a
-// float texture; 0, the default, is no film) and "filmeta" (the film's index, default 1.33).
-struct FilmLayer {
-    FloatTexturePtr thickness;
-    SpectrumPtr eta;
-    // The film at a surface point for the path's wavelengths (absent where the thickness is 0).
-    ThinFilm at(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const;
-    bool may_be_present() const;
-};
 
 class ConductorMaterial final : public Material {
   public:

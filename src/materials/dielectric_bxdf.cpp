@@ -37,8 +37,8 @@ std::optional<Vec3f> transmission_half_vector(Vec3f wo, Vec3f wi, float etap) {
 } // namespace
 
 DielectricBxDF::DielectricBxDF(const SampledSpectrum &eta,
-                               const TrowbridgeReitzDistribution &distribution)
-    : eta_(eta), distribution_(distribution) {
+                               const TrowbridgeReitzDistribution &distribution, const ThinFilm &film)
+    : eta_(eta), film_(film), distribution_(distribution) {
     index_matched_ = true;
     bool any_matched = false;
     for (int i = 0; i < NumWavelengths; ++i) {
@@ -52,11 +52,12 @@ DielectricBxDF::DielectricBxDF(const SampledSpectrum &eta,
 }
 
 float DielectricBxDF::lane_reflectance(float cos_d, int lane) const {
-    return is_matched_lane(lane) ? 0.f : fresnel_dielectric(cos_d, eta_[lane]);
+    if (is_matched_lane(lane)) return 0;
+    return film_.present() ? film_.over_dielectric(cos_d, eta_[lane], lane) : fresnel_dielectric(cos_d, eta_[lane]);
 }
 
 float DielectricBxDF::selection_reflectance(float cos_d) const {
-    if (!dispersive_) return fresnel_dielectric(cos_d, eta_[0]);
+    if (!dispersive_ && !film_.present()) return fresnel_dielectric(cos_d, eta_[0]);
     float sum = 0;
     for (int i = 0; i < NumWavelengths; ++i) sum += lane_reflectance(cos_d, i);
     return sum / NumWavelengths;
@@ -112,7 +113,7 @@ std::optional<BSDFSample> DielectricBxDF::sample_specular(Vec3f wo, float uc, Tr
     if (cos_i == 0) return {};
     int lanes = dispersive_ ? 1 : NumWavelengths;
     for (int i = 0; i < lanes; ++i) {
-        float t = 1 - fresnel_dielectric(cos_o, eta_[i]);
+        float t = 1 - lane_reflectance(cos_o, i);
         t *= radiance_scaling(mode, relative_eta(cos_o, eta_[i]));
         s.f[i] = t / cos_i;
     }
@@ -167,25 +168,32 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
     s.eta = etap;
     float narrowest_alpha = std::min(distribution_.alpha_x(), distribution_.alpha_y());
     if (!dispersive_) {
-        s.f = SampledSpectrum(rough_transmission(wo, s.wi, eta_[0], mode));
+        s.f = rough_transmission_shared_index(wo, s.wi, mode);
     } else if (partly_matched_ || narrowest_alpha < DispersiveAlphaThreshold) {
-        s.f[0] = rough_transmission(wo, s.wi, eta_[0], mode);
+        s.f[0] = rough_transmission(wo, s.wi, 0, mode);
         s.dispersive = true;
     } else {
-        for (int i = 0; i < NumWavelengths; ++i) s.f[i] = rough_transmission(wo, s.wi, eta_[i], mode);
+        for (int i = 0; i < NumWavelengths; ++i) s.f[i] = rough_transmission(wo, s.wi, i, mode);
     }
     return s;
 }
 
-float DielectricBxDF::rough_transmission(Vec3f wo, Vec3f wi, float eta, TransportMode mode) const {
+SampledSpectrum DielectricBxDF::rough_transmission_shared_index(Vec3f wo, Vec3f wi, TransportMode mode) const {
+    if (!film_.present()) return SampledSpectrum(rough_transmission(wo, wi, 0, mode));
+    SampledSpectrum t;
+    for (int i = 0; i < NumWavelengths; ++i) t[i] = rough_transmission(wo, wi, i, mode);
+    return t;
+}
+
+float DielectricBxDF::rough_transmission(Vec3f wo, Vec3f wi, int lane, TransportMode mode) const {
     float cos_o = wo.z, cos_i = wi.z;
-    float etap = relative_eta(cos_o, eta);
+    float etap = relative_eta(cos_o, eta_[lane]);
     std::optional<Vec3f> wm = transmission_half_vector(wo, wi, etap);
     if (!wm) return 0;
     float wo_dot_m = dot(wo, *wm), wi_dot_m = dot(wi, *wm);
     float denom = sqr(wi_dot_m + wo_dot_m / etap);
     if (denom == 0) return 0;
-    float t = (1 - fresnel_dielectric(wo_dot_m, eta)) * distribution_.D(*wm) * distribution_.G(wo, wi) *
+    float t = (1 - lane_reflectance(wo_dot_m, lane)) * distribution_.D(*wm) * distribution_.G(wo, wi) *
               std::abs(wi_dot_m * wo_dot_m / (cos_i * cos_o * denom));
     t *= radiance_scaling(mode, etap);
     return t;
@@ -209,9 +217,9 @@ SampledSpectrum DielectricBxDF::f(Vec3f wo, Vec3f wi, TransportMode mode) const 
             result[i] = lane_reflectance(wo_dot_m, i) * common;
         return result;
     }
-    if (!dispersive_) return SampledSpectrum(rough_transmission(wo, wi, eta_[0], mode));
+    if (!dispersive_) return rough_transmission_shared_index(wo, wi, mode);
     for (int i = 0; i < NumWavelengths; ++i)
-        if (!is_matched_lane(i)) result[i] = rough_transmission(wo, wi, eta_[i], mode);
+        if (!is_matched_lane(i)) result[i] = rough_transmission(wo, wi, i, mode);
     return result;
 }
 

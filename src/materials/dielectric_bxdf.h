@@ -19,6 +19,7 @@
 
 #include "materials/bxdf.h"
 #include "materials/microfacet.h"
+#include "materials/thin_film.h"
 
 namespace caustica {
 
@@ -50,7 +51,12 @@ class DielectricBxDF final : public BxDF {
     // becomes rare, huge spikes; wider lobes overlap enough to keep the ratio bounded.
     static constexpr float DispersiveAlphaThreshold = 0.05f;
 
-    DielectricBxDF(const SampledSpectrum &eta, const TrowbridgeReitzDistribution &distribution);
+    // With a film (thin_film.h), every lane reflects the film's reflectance over the interface
+    // and transmits the rest; the film does not change directions, so it keeps all lanes. A
+    // lane in the index-matched band still sees no interface, film or not: a free-standing film
+    // (a soap bubble, air on both sides) is not modelled by this BxDF.
+    DielectricBxDF(const SampledSpectrum &eta, const TrowbridgeReitzDistribution &distribution,
+                   const ThinFilm &film = {});
 
     SampledSpectrum f(Vec3f wo, Vec3f wi, TransportMode mode) const override;
     std::optional<BSDFSample> sample_f(Vec3f wo, float uc, Vec2f u, TransportMode mode,
@@ -72,20 +78,25 @@ class DielectricBxDF final : public BxDF {
     bool specular() const { return index_matched_ || distribution_.effectively_smooth(); }
     // The reflectance that chooses between reflection and refraction when sampling, for light
     // meeting the interface (or a facet) with cosine cos_d: the Fresnel term of the single
-    // index, or for a dispersive one the average over the lanes. The average makes every lane's
+    // index, or, where lanes reflect differently (a dispersive index, a film), the average over
+    // the lanes. The average makes every lane's
     // reflection weight F_i / F at most NumWavelengths; the hero's F alone would give F_i / F_0,
     // unbounded where F_0 nearly vanishes (a hero index at or near 1 while other lanes reflect).
     float selection_reflectance(float cos_d) const;
-    // Fresnel reflectance of one lane: zero for a lane in the index-matched band.
+    // Reflectance of one lane (Fresnel's, or the film's over the interface): zero for a lane in
+    // the index-matched band.
     float lane_reflectance(float cos_d, int lane) const;
     std::optional<BSDFSample> sample_specular(Vec3f wo, float uc, TransportMode mode,
                                               SampleFlags flags) const;
     std::optional<BSDFSample> sample_rough(Vec3f wo, float uc, Vec2f u, TransportMode mode,
                                            SampleFlags flags) const;
-    // Rough transmission value of one wavelength with relative index eta (inside / outside).
-    float rough_transmission(Vec3f wo, Vec3f wi, float eta, TransportMode mode) const;
+    // Rough transmission value of wavelength `lane`.
+    float rough_transmission(Vec3f wo, Vec3f wi, int lane, TransportMode mode) const;
+    // Rough transmission of every lane when they share one index (no dispersion).
+    SampledSpectrum rough_transmission_shared_index(Vec3f wo, Vec3f wi, TransportMode mode) const;
 
     SampledSpectrum eta_;
+    ThinFilm film_;
     TrowbridgeReitzDistribution distribution_;
     bool dispersive_ = false, index_matched_ = false;
     // Some lanes, not all, are in the index-matched band.

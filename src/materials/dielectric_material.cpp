@@ -21,8 +21,9 @@ void spectrum_range(const Spectrum &s, float *min_value, float *max_value) {
 }
 
 DielectricMaterial::DielectricMaterial(SpectrumPtr eta, MicrofacetRoughness roughness,
-                                       SpectrumPtr sigma_a)
-    : eta_(std::move(eta)), roughness_(std::move(roughness)), sigma_a_(std::move(sigma_a)) {
+                                       SpectrumPtr sigma_a, FilmLayer film)
+    : eta_(std::move(eta)), roughness_(std::move(roughness)), sigma_a_(std::move(sigma_a)),
+      film_(std::move(film)) {
     float lo, hi;
     spectrum_range(*eta_, &lo, &hi);
     dispersive_ = !eta_->is_constant() && lo != hi;
@@ -34,7 +35,8 @@ DielectricMaterial::DielectricMaterial(SpectrumPtr eta, MicrofacetRoughness roug
 BSDF DielectricMaterial::get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                                   ScratchBuffer &scratch) const {
     TextureEvalContext ctx(si);
-    auto *bxdf = scratch.make<DielectricBxDF>(eta_->sample(lambda), roughness_.distribution(ctx));
+    auto *bxdf = scratch.make<DielectricBxDF>(eta_->sample(lambda), roughness_.distribution(ctx),
+                                              film_.at(ctx, lambda));
     return BSDF(si.shading.n, si.shading.dpdu, bxdf);
 }
 

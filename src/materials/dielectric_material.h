@@ -4,6 +4,7 @@
 
 #include "materials/material.h"
 #include "materials/microfacet_roughness.h"
+#include "materials/thin_film.h"
 #include "spectral/spectrum.h"
 
 namespace caustica {
@@ -31,7 +32,8 @@ class DielectricMaterial final : public Material {
   public:
     // eta: index of the inside relative to the outside (a constant or a dispersion curve).
     // sigma_a: interior absorption per unit length, or null for a clear interior.
-    DielectricMaterial(SpectrumPtr eta, MicrofacetRoughness roughness, SpectrumPtr sigma_a);
+    // film: an interference film on the surface (thin_film.h), or none.
+    DielectricMaterial(SpectrumPtr eta, MicrofacetRoughness roughness, SpectrumPtr sigma_a, FilmLayer film = {});
     BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                   ScratchBuffer &scratch) const override;
     bool is_dispersive() const override { return dispersive_; }
@@ -42,12 +44,15 @@ class DielectricMaterial final : public Material {
         return sigma_a_ ? sigma_a_->sample(lambda) : SampledSpectrum();
     }
     bool has_interior_absorption() const override { return sigma_a_ != nullptr; }
-    bool is_wavelength_independent() const override { return is_flat(*eta_) && (!sigma_a_ || is_flat(*sigma_a_)); }
+    bool is_wavelength_independent() const override {
+        return is_flat(*eta_) && (!sigma_a_ || is_flat(*sigma_a_)) && !film_.may_be_present();
+    }
 
   private:
     SpectrumPtr eta_;
     MicrofacetRoughness roughness_;
     SpectrumPtr sigma_a_;
+    FilmLayer film_;
     bool dispersive_ = false, specular_ = false;
 };
 

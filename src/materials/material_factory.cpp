@@ -291,7 +291,8 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
     } else if (type == "dielectric") {
         SpectrumPtr eta = read_ior(params);
         MicrofacetRoughness roughness = read_roughness(params, textures);
-        material = std::make_shared<DielectricMaterial>(eta, roughness, read_interior_absorption(params));
+        material = std::make_shared<DielectricMaterial>(eta, roughness, read_interior_absorption(params),
+                                                        read_film(params, textures));
     } else if (type == "disney") {
         material = create_disney_material(params, textures, read_ior(params), read_interior_absorption(params));
     } else if (type == "thindielectric") {

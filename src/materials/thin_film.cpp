@@ -1,6 +1,7 @@
 #include "materials/thin_film.h"
 
 #include "core/vecmath.h"
+#include "textures/texture.h"
 
 #include <cmath>
 
@@ -65,6 +66,30 @@ SampledSpectrum ThinFilm::over_conductor(float cos_i, const SampledSpectrum &bas
     for (int i = 0; i < NumWavelengths; ++i)
         r[i] = thin_film_response(cos_i, eta[i], {base_eta[i], k[i]}, thickness_nm, lambda[i]).reflectance;
     return r;
+}
+
+float ThinFilm::over_dielectric(float cos_d, float base_eta, int lane) const {
+    if (cos_d >= 0) return thin_film_response(cos_d, eta[lane], base_eta, thickness_nm, lambda[lane]).reflectance;
+    // Seen from inside: indices relative to the dielectric's; the thickness scaled by its index
+    // keeps the film's phase, which depends on the film's absolute index.
+    return thin_film_response(-cos_d, eta[lane] / base_eta, 1 / base_eta, thickness_nm * base_eta, lambda[lane])
+        .reflectance;
+}
+
+ThinFilm FilmLayer::at(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const {
+    ThinFilm film;
+    if (!thickness) return film;
+    film.thickness_nm = std::max(thickness->evaluate(ctx), 0.f);
+    if (!film.present()) return film;
+    film.eta = eta->sample(lambda);
+    for (int i = 0; i < NumWavelengths; ++i) film.lambda[i] = lambda[i];
+    return film;
+}
+
+bool FilmLayer::may_be_present() const {
+    if (!thickness) return false;
+    const float *constant = thickness->constant_value();
+    return !constant || *constant > 0;
 }
 
 } // namespace caustica

@@ -16,6 +16,8 @@
 
 #include "spectral/sampled_spectrum.h"
 #include "spectral/sampled_wavelengths.h"
+#include "spectral/spectrum.h"
+#include "textures/texture.h"
 
 #include <complex>
 
@@ -39,6 +41,21 @@ struct ThinFilm {
     bool present() const { return thickness_nm > 0; }
     // Reflectance over a metal of complex index eta + i k, per wavelength.
     SampledSpectrum over_conductor(float cos_i, const SampledSpectrum &base_eta, const SampledSpectrum &k) const;
+    // Reflectance of wavelength `lane` over a dielectric of relative index base_eta, for light
+    // meeting it with cosine cos_d: from outside (cos_d > 0) or from inside the dielectric
+    // (cos_d < 0, total internal reflection included). The film is lossless, so the rest is
+    // transmitted.
+    float over_dielectric(float cos_d, float base_eta, int lane) const;
+};
+
+// A thin film over a surface (above), as materials declare it: "filmthickness" in nm (a
+// float texture; 0, the default, is no film) and "filmeta" (the film's index, default 1.33).
+struct FilmLayer {
+    FloatTexturePtr thickness;
+    SpectrumPtr eta;
+    // The film at a surface point for the path's wavelengths (absent where the thickness is 0).
+    ThinFilm at(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const;
+    bool may_be_present() const;
 };
 
 } // namespace caustica

@@ -143,6 +143,23 @@ std::vector<Case> build_cases() {
                     add_bxdf_case(cases, bxdf, describe("dielectric", a.x, a.y, eta, theta, mode, SampleFlags::All),
                                   wo, mode, SampleFlags::All, {});
             }
+
+    // Thin films (thin_film.h): the lanes' average reflectance chooses between the lobes.
+    ThinFilm film;
+    film.thickness_nm = 350;
+    film.eta = SampledSpectrum(1.33f);
+    film.lambda = SampledSpectrum(420, 510, 600, 690);
+    for (float theta : {20.f, 70.f, 140.f}) {
+        TransportMode mode = next_mode();
+        Vec3f wo = direction_at(theta);
+        auto glass = std::make_shared<DielectricBxDF>(SampledSpectrum(1.5f), TrowbridgeReitzDistribution(0.4f, 0.4f), film);
+        add_bxdf_case(cases, glass, describe("filmed dielectric", 0.4f, 0.4f, 1.5f, theta, mode, SampleFlags::All), wo,
+                      mode, SampleFlags::All, {});
+        auto metal = std::make_shared<ConductorBxDF>(TrowbridgeReitzDistribution(0.3f, 0.3f), cu_eta, cu_k, film);
+        Vec3f mirror(-wo.x, -wo.y, wo.z);
+        add_bxdf_case(cases, metal, describe("filmed conductor", 0.3f, 0.3f, 0, theta, mode, SampleFlags::All), wo,
+                      mode, SampleFlags::All, lobe_chart(mirror, 0.6f));
+    }
     return cases;
 }
 

@@ -3,6 +3,7 @@
 // with T computed from its own amplitudes, a zero thickness as the bare interface, and the
 // conductor BxDF with a film.
 #include "materials/conductor_bxdf.h"
+#include "materials/dielectric_bxdf.h"
 #include "materials/fresnel.h"
 #include "materials/thin_film.h"
 
@@ -97,6 +98,45 @@ TEST(ThinFilm, ConductorBxDFWithAFilm) {
     Vec3f wi = normalize(Vec3f(-0.5f, 0.2f, 0.7f));
     SampledSpectrum a = rough.f(wo, wi, TransportMode::Radiance), b = rough.f(wi, wo, TransportMode::Radiance);
     for (int i = 0; i < NumWavelengths; ++i) EXPECT_NEAR(a[i], b[i], 1e-6f * std::max(1.f, a[i]));
+}
+
+// A dielectric with a film: each lane reflects the film's reflectance and transmits the rest
+// (in importance transport, without radiance compression, the two add to 1), from outside and
+// from inside, where total internal reflection still reflects everything.
+TEST(ThinFilm, DielectricBxDFWithAFilm) {
+    ThinFilm film;
+    film.thickness_nm = 240;
+    film.eta = SampledSpectrum(1.38f);
+    film.lambda = SampledSpectrum(410, 520, 630, 740);
+    const float eta = 1.52f;
+    DielectricBxDF glass(SampledSpectrum(eta), TrowbridgeReitzDistribution(0, 0), film);
+    EXPECT_FALSE(glass.is_dispersive());
+    for (Vec3f wo : {normalize(Vec3f(0.2f, 0, 0.98f)), normalize(Vec3f(0.6f, 0.1f, 0.5f)),
+                     normalize(Vec3f(0.3f, 0, -0.9f))}) {
+        // uc = 0 picks reflection, uc just below 1 transmission.
+        auto r = glass.sample_f(wo, 0, {0.5f, 0.5f}, TransportMode::Importance);
+        auto t = glass.sample_f(wo, 0.9999f, {0.5f, 0.5f}, TransportMode::Importance);
+        ASSERT_TRUE(r && t);
+        ASSERT_EQ(r->flags, BxDFSpecularReflection);
+        ASSERT_EQ(t->flags, BxDFSpecularTransmission);
+        for (int i = 0; i < NumWavelengths; ++i) {
+            const float reflected = r->f[i] * std::abs(r->wi.z), transmitted = t->f[i] * std::abs(t->wi.z);
+            EXPECT_NEAR(reflected, film.over_dielectric(wo.z, eta, i), 1e-6f);
+            EXPECT_NEAR(reflected + transmitted, 1, 1e-5f) << i;
+        }
+        EXPECT_GT(std::abs(r->f[0] - r->f[2]), 1e-3f); // coloured
+    }
+    // Beyond the critical angle inside the glass every lane reflects everything.
+    Vec3f grazing_inside = normalize(Vec3f(0.9f, 0, -0.3f));
+    for (int i = 0; i < NumWavelengths; ++i)
+        EXPECT_NEAR(film.over_dielectric(grazing_inside.z, eta, i), 1, 1e-5f);
+    // A film of zero thickness leaves the bare interface.
+    ThinFilm none = film;
+    none.thickness_nm = 0;
+    DielectricBxDF bare(SampledSpectrum(eta), TrowbridgeReitzDistribution(0, 0), none);
+    auto r = bare.sample_f(normalize(Vec3f(0.6f, 0.1f, 0.5f)), 0, {0.5f, 0.5f}, TransportMode::Radiance);
+    ASSERT_TRUE(r);
+    EXPECT_NEAR(r->f[0] * r->wi.z, fresnel_dielectric(r->wi.z, eta), 1e-6f);
 }
 
 } // namespace
