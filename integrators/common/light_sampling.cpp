@@ -9,7 +9,7 @@
 namespace caustica {
 
 float light_pdf(const Scene &scene, const Light &light, const LightSampleContext &ctx, Vec3f wi) {
-    return scene.light_sampler->pmf(&light) * light.pdf_li(ctx, wi);
+    return scene.light_sampler->pmf(ctx, &light) * light.pdf_li(ctx, wi);
 }
 
 namespace {
@@ -23,7 +23,7 @@ SampledSpectrum estimate_direct(const Scene &scene, const LightSampleContext &ct
                                 const Scattering &scattering, const ShadowRay &shadow_ray) {
     float u_light = sampler.get_1d();
     Vec2f u = sampler.get_2d();
-    auto sampled = scene.light_sampler->sample(u_light);
+    auto sampled = scene.light_sampler->sample(ctx, u_light);
     if (!sampled) return {};
     const Light &light = *sampled->light;
     auto ls = light.sample_li(ctx, u, lambda);

@@ -13,7 +13,8 @@ class Scene;
 struct SurfaceInteraction;
 
 // Density (solid angle at ctx) with which sample_direct_lighting picks direction wi on light:
-// the light-selection probability times the light's own pdf.
+// the light-selection probability at ctx (the scene's light sampler may prefer lights near the
+// point) times the light's own pdf.
 float light_pdf(const Scene &scene, const Light &light, const LightSampleContext &ctx, Vec3f wi);
 
 // Whether the caller also finds lights by BSDF sampling from the same point (and weights those

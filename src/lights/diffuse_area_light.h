@@ -18,6 +18,9 @@ class DiffuseAreaLight final : public Light {
     LightType type() const override { return LightType::Area; }
     const Spectrum *emission_spectrum() const override { return radiance_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
+    std::optional<Bounds3f> spatial_bounds() const override {
+        return shape_->bounds();
+    }
     std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
                                            const SampledWavelengths &lambda) const override;
     float pdf_li(const LightSampleContext &ctx, Vec3f wi) const override;

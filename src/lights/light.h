@@ -56,6 +56,9 @@ class Light {
     virtual const Spectrum *emission_spectrum() const { return nullptr; }
     // Total emitted power at the wavelengths, for light selection by power.
     virtual SampledSpectrum phi(const SampledWavelengths &lambda) const = 0;
+    // Where the light's emitting points lie, for light selection by distance; empty for lights
+    // at infinity (distant, infinite).
+    virtual std::optional<Bounds3f> spatial_bounds() const { return std::nullopt; }
 
     virtual std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
                                                    const SampledWavelengths &lambda) const = 0;

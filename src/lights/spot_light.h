@@ -18,6 +18,11 @@ class SpotLight final : public Light {
     LightType type() const override { return LightType::DeltaPosition; }
     const Spectrum *emission_spectrum() const override { return intensity_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
+    std::optional<Bounds3f> spatial_bounds() const override {
+        Bounds3f b;
+        b.expand(position_);
+        return b;
+    }
     std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
                                            const SampledWavelengths &lambda) const override;
     float pdf_li(const LightSampleContext &ctx, Vec3f wi) const override;

@@ -65,7 +65,7 @@ class Scene {
     GeometryScene geometry;
     std::vector<LightPtr> lights;
     std::vector<const Light *> infinite_lights;
-    std::unique_ptr<PowerLightSampler> light_sampler;
+    std::unique_ptr<LightSampler> light_sampler;
     // The medium around the camera (the outside medium in effect at the Camera directive).
     const Medium *camera_medium = nullptr;
 

@@ -397,7 +397,7 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     scene->geometry.commit();
     Bounds3f bounds = scene->geometry.bounds();
     for (const LightPtr &light : scene->lights) light->preprocess(bounds);
-    scene->light_sampler = std::make_unique<PowerLightSampler>(scene->lights);
+    scene->light_sampler = std::make_unique<SpatialLightSampler>(scene->lights);
     analyse_features(d, *scene);
     const Spectrum *colour = achromatic_colour(*scene);
     scene->features.achromatic = colour != nullptr;

@@ -2,6 +2,7 @@
 
 #include "core/rng.h"
 #include "lights/point_light.h"
+#include "lights/uniform_infinite_light.h"
 
 #include <gtest/gtest.h>
 
@@ -51,6 +52,48 @@ TEST(UniformLightSampler, EveryLightEquallyLikely) {
     EXPECT_EQ(sampler.sample(0.5f)->light, lights[1].get());
     EXPECT_EQ(sampler.sample(OneMinusEpsilon)->light, lights[2].get());
     EXPECT_FALSE(UniformLightSampler({}).sample(0.5f));
+}
+
+LightPtr point_light_at(float intensity, Vec3f p) {
+    return std::make_shared<PointLight>(Transform::translate(p), std::make_shared<ConstantSpectrum>(intensity), 1.f);
+}
+
+// Next-event estimation's choice: power over squared distance, normalised over the local lights,
+// with one share for each light at infinity; sample() and pmf() agree, and the choice without a
+// point stays by power (light paths).
+TEST(SpatialLightSampler, PrefersNearLightsByPowerOverSquaredDistance) {
+    // A weak lamp at distance 1 and one 100 times stronger at distance 20 from the origin.
+    std::vector<LightPtr> lights = {point_light_at(1, {1, 0, 0}), point_light_at(100, {0, 20, 0})};
+    SpatialLightSampler sampler(lights);
+    LightSampleContext origin{{0, 0, 0}, {0, 0, 1}, {0, 0, 1}};
+    // Weights 1 / 1 and 100 / 400.
+    EXPECT_NEAR(sampler.pmf(origin, lights[0].get()), 1 / 1.25f, 1e-6f);
+    EXPECT_NEAR(sampler.pmf(origin, lights[1].get()), 0.25f / 1.25f, 1e-6f);
+    EXPECT_NEAR(sampler.pmf(lights[0].get()), 1 / 101.f, 1e-6f); // without a point: by power
+    int first = 0;
+    const int n = 10000;
+    for (int i = 0; i < n; ++i) {
+        std::optional<SampledLight> s = sampler.sample(origin, (i + 0.5f) / n);
+        ASSERT_TRUE(s);
+        EXPECT_FLOAT_EQ(s->pmf, sampler.pmf(origin, s->light));
+        first += s->light == lights[0].get();
+    }
+    EXPECT_NEAR(double(first) / n, 0.8, 2.0 / n);
+    // Near the strong lamp it gets nearly every sample.
+    LightSampleContext near_strong{{0, 19, 0}, {0, 1, 0}, {0, 1, 0}};
+    EXPECT_GT(sampler.pmf(near_strong, lights[1].get()), 0.99f);
+}
+
+TEST(SpatialLightSampler, LightsAtInfinityShareLikePbrtV4) {
+    std::vector<LightPtr> lights = {point_light_at(1, {1, 0, 0}), point_light_at(5, {3, 0, 0}),
+                                    std::make_shared<UniformInfiniteLight>(std::make_shared<ConstantSpectrum>(1.f), 1.f)};
+    SpatialLightSampler sampler(lights);
+    LightSampleContext origin{{0, 0, 0}, {0, 0, 1}, {0, 0, 1}};
+    // One share for the light at infinity, one for both lamps together.
+    EXPECT_NEAR(sampler.pmf(origin, lights[2].get()), 0.5f, 1e-6f);
+    float sum = 0;
+    for (const LightPtr &l : lights) sum += sampler.pmf(origin, l.get());
+    EXPECT_NEAR(sum, 1, 1e-6f);
 }
 
 }  // namespace
