@@ -16,30 +16,20 @@
 
 namespace caustica {
 
-class FBmTexture final : public FloatTexture {
+// "fbm" and "wrinkled": a sum of octaves of noise at the texture-space point, by fractional
+// Brownian motion or by turbulence.
+class OctaveNoiseTexture final : public FloatTexture {
   public:
-    FBmTexture(TextureMapping3D mapping, float omega, int octaves)
-        : mapping_(mapping), omega_(omega), octaves_(octaves) {}
+    using OctaveSum = float (*)(Vec3f p, float omega, int octaves);
+    OctaveNoiseTexture(TextureMapping3D mapping, OctaveSum sum, float omega, int octaves)
+        : mapping_(mapping), sum_(sum), omega_(omega), octaves_(octaves) {}
     float evaluate(const TextureEvalContext &ctx) const override {
-        return fractional_brownian_motion(mapping_.map(ctx), omega_, octaves_);
+        return sum_(mapping_.map(ctx), omega_, octaves_);
     }
 
   private:
     TextureMapping3D mapping_;
-    float omega_;
-    int octaves_;
-};
-
-class WrinkledTexture final : public FloatTexture {
-  public:
-    WrinkledTexture(TextureMapping3D mapping, float omega, int octaves)
-        : mapping_(mapping), omega_(omega), octaves_(octaves) {}
-    float evaluate(const TextureEvalContext &ctx) const override {
-        return turbulence(mapping_.map(ctx), omega_, octaves_);
-    }
-
-  private:
-    TextureMapping3D mapping_;
+    OctaveSum sum_;
     float omega_;
     int octaves_;
 };

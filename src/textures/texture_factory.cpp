@@ -116,12 +116,10 @@ FloatTexturePtr create_float_texture(const std::string &type, const Transform &r
     TextureMapping3D mapping_3d(render_from_texture.inverse());
     if (type == "constant")
         result = std::make_shared<ConstantFloatTexture>(params.get_one_float("value", 1));
-    else if (type == "fbm")
-        result = std::make_shared<FBmTexture>(mapping_3d, params.get_one_float("roughness", 0.5f),
-                                              octaves(params));
-    else if (type == "wrinkled")
-        result = std::make_shared<WrinkledTexture>(mapping_3d, params.get_one_float("roughness", 0.5f),
-                                                   octaves(params));
+    else if (type == "fbm" || type == "wrinkled")
+        result = std::make_shared<OctaveNoiseTexture>(
+            mapping_3d, type == "fbm" ? fractional_brownian_motion : turbulence,
+            params.get_one_float("roughness", 0.5f), octaves(params));
     else if (type == "windy")
         result = std::make_shared<WindyTexture>(mapping_3d);
     else if (type == "imagemap")
