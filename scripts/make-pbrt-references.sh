@@ -36,7 +36,9 @@ hard/near-specular-glass 4096
 hard/skin-lens 32768
 hard/coated-low-roughness 4096
 textures/noise-textures 256
-textures/bump-and-normal-map 256"
+textures/bump-and-normal-map 256
+cameras/spherical-equirect 64
+cameras/spherical-equalarea 64"
 
 want=("$@")
 while read -r scene spp; do

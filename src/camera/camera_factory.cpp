@@ -2,6 +2,7 @@
 
 #include "camera/orthographic_camera.h"
 #include "camera/perspective_camera.h"
+#include "camera/spherical_camera.h"
 
 namespace caustica {
 
@@ -65,12 +66,27 @@ CameraPtr create_camera(const std::string &type, const Transform &world_from_cam
         return std::make_shared<OrthographicCamera>(world_from_camera, film, p.screen,
                                                     p.lens_radius, p.focal_distance);
     }
-    if (type == "realistic" || type == "spherical") {
+    if (type == "spherical") {
+        params.get_one_float("shutteropen", 0);
+        params.get_one_float("shutterclose", 1);
+        const std::string mapping = params.get_one_string("mapping", "equalarea");
+        if (mapping != "equalarea" && mapping != "equirectangular")
+            throw InputError(params.location("mapping"), "\"mapping\" must be \"equalarea\" or "
+                                                         "\"equirectangular\", not \"" + mapping + "\"");
+        if (mapping == "equalarea" && film.full_resolution.x != film.full_resolution.y)
+            throw InputError(loc, "the \"equalarea\" spherical camera needs a square film, not " +
+                                      std::to_string(film.full_resolution.x) + "x" +
+                                      std::to_string(film.full_resolution.y));
+        return std::make_shared<SphericalCamera>(world_from_camera, film,
+                                                 mapping == "equalarea" ? SphericalCamera::Mapping::EqualArea
+                                                                        : SphericalCamera::Mapping::Equirectangular);
+    }
+    if (type == "realistic") {
         warning(loc, "the \"" + type + "\" camera is not supported; rendering with a "
                      "perspective camera instead");
         // The replaced camera's own parameters are acknowledged so that only the warning above
         // reports them, not one warning each.
-        for (const char *name : {"lensfile", "apertureimage", "mapping"})
+        for (const char *name : {"lensfile", "apertureimage"})
             if (params.has(name)) params.get_one_string(name, "");
         for (const char *name : {"aperturediameter", "focusdistance"})
             if (params.has(name)) params.get_one_float(name, 0);
