@@ -38,7 +38,8 @@ hard/coated-low-roughness 4096
 textures/noise-textures 256
 textures/bump-and-normal-map 256
 cameras/spherical-equirect 64
-cameras/spherical-equalarea 64"
+cameras/spherical-equalarea 64
+lights/goniometric 1024"
 
 want=("$@")
 while read -r scene spp; do

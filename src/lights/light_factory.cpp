@@ -2,6 +2,7 @@
 
 #include "lights/diffuse_area_light.h"
 #include "lights/distant_light.h"
+#include "lights/goniometric_light.h"
 #include "lights/image_infinite_light.h"
 #include "lights/photometric.h"
 #include "lights/point_light.h"
@@ -101,6 +102,32 @@ LightPtr create_spot(const Transform &render_from_light, const ParameterDictiona
                                        cone_angle, cone_angle - cone_delta);
 }
 
+LightPtr create_goniometric(const Transform &render_from_light, const ParameterDictionary &params) {
+    SpectrumPtr I = light_spectrum(params, "I");
+    float scale = photometric_scale(read_scale(params), *I);
+    const std::string filename = params.get_one_string("filename", "");
+    if (filename.empty())
+        throw InputError(params.location("filename"), "goniometric: no \"filename\" (the diagram image) given");
+    RGBImage image;
+    try {
+        image = read_rgb_image(params.file_path("filename", filename));
+    } catch (const std::runtime_error &e) {
+        throw InputError(params.location("filename"), e.what());
+    }
+    if (image.width != image.height)
+        throw InputError(params.location("filename"),
+                         "\"" + filename + "\": resolution " + std::to_string(image.width) + "x" +
+                             std::to_string(image.height) +
+                             " is not square (a goniometric diagram is an equal-area octahedral map)");
+    auto light = std::make_shared<GoniometricLight>(render_from_light, tabulated(I), scale, image);
+    float power = params.get_one_float("power", -1);
+    // Intensity scale * mean over the sphere of directions gives power 4 pi scale * mean.
+    if (power > 0 && light->mean() > 0)
+        light = std::make_shared<GoniometricLight>(render_from_light, tabulated(I),
+                                                   scale * power / (4 * Pi * light->mean()), image);
+    return light;
+}
+
 LightPtr create_distant(const Transform &render_from_light, const ParameterDictionary &params) {
     SpectrumPtr L = light_spectrum(params, "L");
     float scale = photometric_scale(read_scale(params), *L);
@@ -182,7 +209,9 @@ LightPtr create_light(const std::string &type, const Transform &render_from_ligh
         light = create_distant(render_from_light, params);
     else if (type == "infinite")
         light = create_infinite(render_from_light, params);
-    else if (type == "goniometric" || type == "projection") {
+    else if (type == "goniometric")
+        light = create_goniometric(render_from_light, params);
+    else if (type == "projection") {
         warning(loc, "\"" + type + "\" lights are not supported; the light is ignored");
         return nullptr;
     } else
