@@ -39,7 +39,8 @@ textures/noise-textures 256
 textures/bump-and-normal-map 256
 cameras/spherical-equirect 64
 cameras/spherical-equalarea 64
-lights/goniometric 1024"
+lights/goniometric 1024
+lights/projection 1024"
 
 want=("$@")
 while read -r scene spp; do

@@ -6,6 +6,7 @@
 #include "lights/image_infinite_light.h"
 #include "lights/photometric.h"
 #include "lights/point_light.h"
+#include "lights/projection_light.h"
 #include "lights/rgb_image.h"
 #include "lights/spot_light.h"
 #include "lights/uniform_infinite_light.h"
@@ -128,6 +129,28 @@ LightPtr create_goniometric(const Transform &render_from_light, const ParameterD
     return light;
 }
 
+LightPtr create_projection(const Transform &render_from_light, const ParameterDictionary &params) {
+    float scale = photometric_scale(read_scale(params), RGBColorSpace::srgb().illuminant());
+    const float fov = params.get_one_float_checked("fov", 90, 0, 180);
+    if (!(fov > 0 && fov < 180))
+        throw InputError(params.location("fov"), "\"fov\" must lie strictly between 0 and 180 degrees");
+    const std::string filename = params.get_one_string("filename", "");
+    if (filename.empty())
+        throw InputError(params.location("filename"), "projection: no \"filename\" (the projected image) given");
+    RGBImage image;
+    try {
+        image = read_rgb_image(params.file_path("filename", filename));
+    } catch (const std::runtime_error &e) {
+        throw InputError(params.location("filename"), e.what());
+    }
+    auto light = std::make_shared<ProjectionLight>(render_from_light, image, scale, fov);
+    const float power = params.get_one_float("power", -1);
+    if (power > 0 && light->unit_luminous_power() > 0)
+        light = std::make_shared<ProjectionLight>(render_from_light, std::move(image),
+                                                  scale * power / light->unit_luminous_power(), fov);
+    return light;
+}
+
 LightPtr create_distant(const Transform &render_from_light, const ParameterDictionary &params) {
     SpectrumPtr L = light_spectrum(params, "L");
     float scale = photometric_scale(read_scale(params), *L);
@@ -211,10 +234,9 @@ LightPtr create_light(const std::string &type, const Transform &render_from_ligh
         light = create_infinite(render_from_light, params);
     else if (type == "goniometric")
         light = create_goniometric(render_from_light, params);
-    else if (type == "projection") {
-        warning(loc, "\"" + type + "\" lights are not supported; the light is ignored");
-        return nullptr;
-    } else
+    else if (type == "projection")
+        light = create_projection(render_from_light, params);
+    else
         throw InputError(loc, "unknown light type \"" + type + "\"");
     params.report_unused();
     return light;
