@@ -3,6 +3,7 @@
 #include "camera/camera.h"
 #include "core/error.h"
 #include "integrators/bdpt/mis_weight.h"
+#include "integrators/common/camera_importance.h"
 #include "integrators/common/light_path_start.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/profile_subsurface.h"
@@ -23,10 +24,7 @@ BDPT::BDPT(const ParameterDictionary &params, const Scene &scene)
     : max_depth_(params.get_one_int("maxdepth", 5)) {
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
-    if (!scene.camera->models_importance())
-        throw InputError(scene.integrator_location,
-                         "bidirectional path tracing (bdpt) needs a camera whose importance is "
-                         "modelled (perspective); this scene's camera has none");
+    require_camera_importance(scene, "bidirectional path tracing (bdpt)");
     params.report_unused();
 }
 

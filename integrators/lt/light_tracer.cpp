@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "geometry/interaction.h"
+#include "integrators/common/camera_importance.h"
 #include "integrators/common/light_path_start.h"
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/splat_scale.h"
@@ -17,10 +18,7 @@ LightTracer::LightTracer(const ParameterDictionary &params, const Scene &scene)
     : max_depth_(params.get_one_int("maxdepth", 5)) {
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
-    if (!scene.camera->models_importance())
-        throw InputError(scene.integrator_location,
-                         "the light tracer (lt) needs a camera whose importance is modelled "
-                         "(perspective); this scene's camera has none");
+    require_camera_importance(scene, "the light tracer (lt)");
     if (!scene.infinite_lights.empty())
         warning(scene.integrator_location,
                 "the light tracer (lt) does not render environment lights seen directly by the "

@@ -2,6 +2,7 @@
 
 #include "camera/camera.h"
 #include "core/error.h"
+#include "integrators/common/camera_importance.h"
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/merge_radius.h"
 #include "integrators/common/light_path_start.h"
@@ -48,10 +49,7 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
     if (light_vertices != "store" && light_vertices != "retrace")
         throw InputError(params.location("lightvertices"), "\"lightvertices\" must be \"store\" or \"retrace\"");
     retrace_light_paths_ = light_vertices == "retrace";
-    if (!scene.camera->models_importance())
-        throw InputError(scene.integrator_location,
-                         std::string(name) + " needs a camera whose importance is modelled (perspective); "
-                                             "this scene's camera has none");
+    require_camera_importance(scene, name);
     // A radius given in the scene is used on surfaces and in media alike.
     base_medium_radius_ = base_radius_;
     if (base_radius_ == 0) {

@@ -73,6 +73,7 @@ class Scene {
     std::string integrator_reason;       // why `auto` chose it (empty when it was named)
     ParameterDictionary integrator_params;
     SourceLocation integrator_location;
+    SourceLocation camera_location; // of the Camera directive (empty for pbrt-v4's default camera)
     std::string output_filename;         // Film "filename"
     SceneFeatures features;
     RenderOverrides overrides;

@@ -379,6 +379,7 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     scene->camera = create_camera(d.camera.type.empty() ? "perspective" : d.camera.type,
                                   d.camera.world_from_camera, scene->film->extent(), d.camera.params,
                                   d.camera.loc);
+    scene->camera_location = d.camera.loc;
     scene->sampler = d.sampler.type.empty()
                          ? create_default_sampler(int(ov.seed), ov.spp)
                          : create_sampler(d.sampler.type, d.sampler.params, d.sampler.loc, int(ov.seed), ov.spp,

@@ -25,12 +25,20 @@ TEST(SphericalCamera, EqualAreaMatchesPbrtV4) {
     EXPECT_LT(a.worst_z, 5.0);
 }
 
-// Integrators that connect light paths to the lens refuse a camera without importance.
-TEST(SphericalCamera, LightTracingRefusesIt) {
+// Integrators that connect light paths to the lens refuse a camera without importance, at its
+// Camera directive (line 5 of the file).
+TEST(SphericalCamera, LightPathIntegratorsRefuseItAtTheCameraLine) {
     const std::string dir = scratch_dir("spherical-lt");
-    EXPECT_EQ(run_caustica("render " + std::string(CAUSTICA_SOURCE_DIR) +
-                           "/scenes/cameras/spherical-equirect.pbrt --quiet --integrator lt --spp 1 -o " + dir + "/a.exr"),
-              2);
+    for (const char *integrator : {"lt", "bdpt", "bpm", "vcm"}) {
+        const std::string scene = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cameras/spherical-equirect.pbrt";
+        EXPECT_EQ(run_caustica("render " + scene + " --quiet --integrator " + integrator + " --spp 1 -o " + dir +
+                                   "/a.exr",
+                               dir + "/err.txt"),
+                  2)
+            << integrator;
+        EXPECT_NE(read_text(dir + "/err.txt").find("spherical-equirect.pbrt:5:1: error"), std::string::npos)
+            << integrator << ": " << read_text(dir + "/err.txt");
+    }
 }
 
 } // namespace
