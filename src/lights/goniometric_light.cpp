@@ -8,7 +8,7 @@ namespace caustica {
 
 GoniometricLight::GoniometricLight(const Transform &render_from_light, SpectrumPtr intensity, float scale,
                                    const RGBImage &image)
-    : render_from_light_(render_from_light), position_(render_from_light.apply_point({0, 0, 0})),
+    : PointSourceLight(render_from_light.apply_point({0, 0, 0})), render_from_light_(render_from_light),
       intensity_(std::move(intensity)), scale_(scale), resolution_(image.width) {
     values_.resize(size_t(image.width) * image.height);
     double sum = 0;
@@ -44,26 +44,13 @@ SampledSpectrum GoniometricLight::phi(const SampledWavelengths &lambda) const {
     return 4 * Pi * scale_ * mean_ * intensity_->sample(lambda);
 }
 
-std::optional<LightLiSample> GoniometricLight::sample_li(const LightSampleContext &ctx, Vec2f,
-                                                         const SampledWavelengths &lambda) const {
-    const Vec3f to_light = position_ - ctx.p;
-    const float d2 = length_squared(to_light);
-    if (d2 == 0) return {};
-    LightLiSample s;
-    s.wi = to_light / std::sqrt(d2);
-    s.L = scale_ * diagram(-s.wi) * intensity_->sample(lambda) / d2;
-    s.pdf = 1;
-    s.p_light = position_;
-    return s;
-}
-
 std::optional<LightLeSample> GoniometricLight::sample_le(Vec2f u1, Vec2f, const SampledWavelengths &lambda) const {
     float pdf = 0;
     const Vec2f uv = distribution_.sample(u1, &pdf);
     if (!(pdf > 0)) return {};
     LightLeSample s;
     s.ray = {position_, from_diagram(equal_area_square_to_sphere(uv)), Infinity};
-    s.L = scale_ * diagram(s.ray.d) * intensity_->sample(lambda);
+    s.L = intensity_towards(s.ray.d, lambda);
     s.pdf_pos = 1;
     s.pdf_dir = pdf / (4 * Pi);
     return s;

@@ -9,27 +9,21 @@
 
 #include "core/sampling.h"
 #include "core/transform.h"
-#include "lights/light.h"
+#include "lights/point_source_light.h"
 #include "lights/rgb_image.h"
 #include "spectral/spectrum.h"
 
 namespace caustica {
 
-class GoniometricLight final : public Light {
+class GoniometricLight final : public PointSourceLight {
   public:
     GoniometricLight(const Transform &render_from_light, SpectrumPtr intensity, float scale, const RGBImage &image);
 
-    LightType type() const override { return LightType::DeltaPosition; }
     const Spectrum *emission_spectrum() const override { return intensity_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
-    std::optional<Bounds3f> spatial_bounds() const override {
-        Bounds3f b;
-        b.expand(position_);
-        return b;
+    SampledSpectrum intensity_towards(Vec3f w, const SampledWavelengths &lambda) const override {
+        return scale_ * diagram(w) * intensity_->sample(lambda);
     }
-    std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
-                                           const SampledWavelengths &lambda) const override;
-    float pdf_li(const LightSampleContext &, Vec3f) const override { return 0; }
     std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2, const SampledWavelengths &lambda) const override;
     void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const override;
 
@@ -43,7 +37,6 @@ class GoniometricLight final : public Light {
     Vec3f from_diagram(Vec3f w_diagram) const;
 
     Transform render_from_light_;
-    Vec3f position_;
     SpectrumPtr intensity_;
     float scale_;
     int resolution_;

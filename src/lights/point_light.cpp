@@ -5,7 +5,7 @@
 namespace caustica {
 
 PointLight::PointLight(const Transform &render_from_light, SpectrumPtr intensity, float scale)
-    : position_(render_from_light.apply_point({0, 0, 0})),
+    : PointSourceLight(render_from_light.apply_point({0, 0, 0})),
       intensity_(std::move(intensity)),
       scale_(scale) {}
 
@@ -13,22 +13,6 @@ SampledSpectrum PointLight::phi(const SampledWavelengths &lambda) const {
     // Intensity integrated over the whole sphere of directions.
     return 4 * Pi * scale_ * intensity_->sample(lambda);
 }
-
-std::optional<LightLiSample> PointLight::sample_li(const LightSampleContext &ctx, Vec2f,
-                                                   const SampledWavelengths &lambda) const {
-    Vec3f to_light = position_ - ctx.p;
-    float d2 = length_squared(to_light);
-    if (d2 == 0) return {};
-    LightLiSample s;
-    s.wi = to_light / std::sqrt(d2);
-    // Irradiance on a surface facing the light: I / r^2 (the cosine is the integrator's).
-    s.L = scale_ * intensity_->sample(lambda) / d2;
-    s.pdf = 1;
-    s.p_light = position_;
-    return s;
-}
-
-float PointLight::pdf_li(const LightSampleContext &, Vec3f) const { return 0; }
 
 std::optional<LightLeSample> PointLight::sample_le(Vec2f u1, Vec2f,
                                                    const SampledWavelengths &lambda) const {

@@ -14,9 +14,9 @@ constexpr float Hither = 1e-3f;
 } // namespace
 
 ProjectionLight::ProjectionLight(const Transform &render_from_light, RGBImage image, float scale, float fov_degrees)
-    : render_from_light_(render_from_light * Transform::scale(1, -1, 1)),
-      light_from_render_(render_from_light_.inverse()),
-      position_(render_from_light.apply_point({0, 0, 0})), image_(std::move(image)), scale_(scale),
+    : PointSourceLight(render_from_light.apply_point({0, 0, 0})),
+      render_from_light_(render_from_light * Transform::scale(1, -1, 1)),
+      light_from_render_(render_from_light_.inverse()), image_(std::move(image)), scale_(scale),
       tan_half_fov_(std::tan(radians(fov_degrees) / 2)) {
     const float aspect = float(image_.width) / float(image_.height);
     window_min_ = aspect > 1 ? Vec2f(-aspect, -1) : Vec2f(-1, -1 / aspect);
@@ -77,20 +77,9 @@ float ProjectionLight::unit_luminous_power() const {
     return float(window_area_ * sum / double(image_.width * image_.height));
 }
 
-std::optional<LightLiSample> ProjectionLight::sample_li(const LightSampleContext &ctx, Vec2f,
-                                                        const SampledWavelengths &lambda) const {
-    const Vec3f to_light = position_ - ctx.p;
-    const float d2 = length_squared(to_light);
-    if (d2 == 0) return {};
-    LightLiSample s;
-    s.wi = to_light / std::sqrt(d2);
-    std::optional<Vec2f> unit = window_point(normalize(light_from_render_.apply_vector(-s.wi)));
-    if (!unit) return {};
-    s.L = intensity(*unit, lambda) / d2;
-    if (s.L.is_black()) return {};
-    s.pdf = 1;
-    s.p_light = position_;
-    return s;
+SampledSpectrum ProjectionLight::intensity_towards(Vec3f w, const SampledWavelengths &lambda) const {
+    std::optional<Vec2f> unit = window_point(normalize(light_from_render_.apply_vector(w)));
+    return unit ? intensity(*unit, lambda) : SampledSpectrum(0.f);
 }
 
 std::optional<LightLeSample> ProjectionLight::sample_le(Vec2f u1, Vec2f, const SampledWavelengths &lambda) const {

@@ -8,27 +8,19 @@
 
 #include "core/sampling.h"
 #include "core/transform.h"
-#include "lights/light.h"
+#include "lights/point_source_light.h"
 #include "lights/rgb_image.h"
 #include "spectral/color_space.h"
 
 namespace caustica {
 
-class ProjectionLight final : public Light {
+class ProjectionLight final : public PointSourceLight {
   public:
     // render_from_light is the CTM at the LightSource directive (the y flip is added here).
     ProjectionLight(const Transform &render_from_light, RGBImage image, float scale, float fov_degrees);
 
-    LightType type() const override { return LightType::DeltaPosition; }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
-    std::optional<Bounds3f> spatial_bounds() const override {
-        Bounds3f b;
-        b.expand(position_);
-        return b;
-    }
-    std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
-                                           const SampledWavelengths &lambda) const override;
-    float pdf_li(const LightSampleContext &, Vec3f) const override { return 0; }
+    SampledSpectrum intensity_towards(Vec3f w, const SampledWavelengths &lambda) const override;
     std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2, const SampledWavelengths &lambda) const override;
     void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const override;
 
@@ -43,7 +35,6 @@ class ProjectionLight final : public Light {
     SampledSpectrum intensity(Vec2f unit, const SampledWavelengths &lambda) const;
 
     Transform render_from_light_, light_from_render_;
-    Vec3f position_;
     RGBImage image_;
     float scale_;
     float tan_half_fov_;

@@ -36,9 +36,9 @@ float sample_smooth_step(float u, float a, float b) {
 
 SpotLight::SpotLight(const Transform &render_from_light, SpectrumPtr intensity, float scale,
                      float total_width_degrees, float falloff_start_degrees)
-    : render_from_light_(render_from_light),
+    : PointSourceLight(render_from_light.apply_point({0, 0, 0})),
+      render_from_light_(render_from_light),
       light_from_render_(render_from_light.inverse()),
-      position_(render_from_light.apply_point({0, 0, 0})),
       intensity_(std::move(intensity)),
       scale_(scale),
       cos_falloff_end_(std::cos(radians(total_width_degrees))),
@@ -53,25 +53,6 @@ SampledSpectrum SpotLight::phi(const SampledWavelengths &lambda) const {
     // Integral over the sphere of the angular profile: 2 pi (cone + falloff ring).
     return scale_ * intensity_->sample(lambda) * 2 * Pi * (cone_weight() + falloff_weight());
 }
-
-std::optional<LightLiSample> SpotLight::sample_li(const LightSampleContext &ctx, Vec2f,
-                                                  const SampledWavelengths &lambda) const {
-    Vec3f to_light = position_ - ctx.p;
-    float d2 = length_squared(to_light);
-    if (d2 == 0) return {};
-    Vec3f wi = to_light / std::sqrt(d2);
-    Vec3f w_light = normalize(light_from_render_.apply_vector(-wi));
-    SampledSpectrum L = intensity(w_light, lambda) / d2;
-    if (L.is_black()) return {};
-    LightLiSample s;
-    s.L = L;
-    s.wi = wi;
-    s.pdf = 1;
-    s.p_light = position_;
-    return s;
-}
-
-float SpotLight::pdf_li(const LightSampleContext &, Vec3f) const { return 0; }
 
 std::optional<LightLeSample> SpotLight::sample_le(Vec2f u1, Vec2f u2,
                                                   const SampledWavelengths &lambda) const {

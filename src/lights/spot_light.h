@@ -4,35 +4,28 @@
 #pragma once
 
 #include "core/transform.h"
-#include "lights/light.h"
+#include "lights/point_source_light.h"
 #include "spectral/spectrum.h"
 
 namespace caustica {
 
-class SpotLight final : public Light {
+class SpotLight final : public PointSourceLight {
   public:
     // Angles in degrees; falloff_start <= total_width.
     SpotLight(const Transform &render_from_light, SpectrumPtr intensity, float scale,
               float total_width_degrees, float falloff_start_degrees);
 
-    LightType type() const override { return LightType::DeltaPosition; }
     const Spectrum *emission_spectrum() const override { return intensity_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
-    std::optional<Bounds3f> spatial_bounds() const override {
-        Bounds3f b;
-        b.expand(position_);
-        return b;
+    SampledSpectrum intensity_towards(Vec3f w, const SampledWavelengths &lambda) const override {
+        return intensity(normalize(light_from_render_.apply_vector(w)), lambda);
     }
-    std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
-                                           const SampledWavelengths &lambda) const override;
-    float pdf_li(const LightSampleContext &ctx, Vec3f wi) const override;
     std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2,
                                            const SampledWavelengths &lambda) const override;
     void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const override;
 
     // Radiant intensity towards light-space direction w (unit).
     SampledSpectrum intensity(Vec3f w_light, const SampledWavelengths &lambda) const;
-    Vec3f position() const { return position_; }
 
   private:
     // Probabilities (unnormalised) of sampling the full-intensity cone and the falloff ring:
@@ -41,7 +34,6 @@ class SpotLight final : public Light {
     float falloff_weight() const { return (cos_falloff_start_ - cos_falloff_end_) / 2; }
 
     Transform render_from_light_, light_from_render_;
-    Vec3f position_;
     SpectrumPtr intensity_;
     float scale_;
     float cos_falloff_end_, cos_falloff_start_;
