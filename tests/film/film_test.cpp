@@ -320,7 +320,7 @@ TEST(FilmFactory, ReadsPbrtParametersAndCropWindows) {
     EXPECT_EQ(img.at(3, 1, 0), 1);
 
     f = create_film("rgb", dict({number_param("integer", "pixelbounds", {1, 3, 2, 20})}), nullptr,
-                    std::make_unique<BoxFilter>(), loc, {10, 5});
+                    std::make_unique<BoxFilter>(), loc, FilmOverrides{Vec2i{10, 5}, {}, {}});
     EXPECT_EQ(f->resolution(), (Vec2i{10, 5}));
     EXPECT_EQ(f->pixel_bounds(), (PixelBounds{{1, 2}, {3, 5}}));  // clamped to the image
     EXPECT_EQ(create_film("gbuffer", dict({}), nullptr, std::make_unique<BoxFilter>(), loc)->resolution().x, 1280);
