@@ -64,6 +64,8 @@ MergeResult merge_images(const std::vector<MergeInput> &inputs) {
     std::vector<std::vector<double>> layer_sums(layers.size(), std::vector<double>(out.rgb.size(), 0.0));
     for (const MergeInput &in : inputs) {
         const double w = in.samples_per_pixel;
+        std::vector<const std::vector<float> *> values;
+        for (const std::string &name : layers) values.push_back(&layer_of(in.image, name));
         for (int y = 0; y < in.image.height; ++y)
             for (int x = 0; x < in.image.width; ++x) {
                 const size_t src = size_t(y) * in.image.width + x;
@@ -72,8 +74,7 @@ MergeResult merge_images(const std::vector<MergeInput> &inputs) {
                 for (int c = 0; c < 3; ++c) sum[dst * 3 + c] += w * in.image.rgb[src * 3 + c];
                 for (size_t l = 0; l < layers.size(); ++l) {
                     const double factor = layers[l] == "variance" ? w * w : w;
-                    const std::vector<float> &values = layer_of(in.image, layers[l]);
-                    for (int c = 0; c < 3; ++c) layer_sums[l][dst * 3 + c] += factor * values[src * 3 + c];
+                    for (int c = 0; c < 3; ++c) layer_sums[l][dst * 3 + c] += factor * (*values[l])[src * 3 + c];
                 }
             }
     }

@@ -217,6 +217,8 @@ PixelBounds read_pixel_bounds(const ParameterDictionary &params, Vec2i full, con
         if (!overrides.crop_window.empty()) {
             if (overrides.crop_window.size() != 4)
                 throw InputError("--cropwindow needs 4 values (x0 x1 y0 y1)");
+            for (float v : overrides.crop_window)
+                if (!std::isfinite(v)) throw InputError("--cropwindow values must be finite numbers");
             bounds = crop_window_bounds(overrides.crop_window, full);
         } else {
             const std::vector<int> &pb = overrides.pixel_bounds;
@@ -243,6 +245,9 @@ PixelBounds read_pixel_bounds(const ParameterDictionary &params, Vec2i full, con
         if (cw.size() != 4)
             throw InputError(params.location("cropwindow"),
                              "\"cropwindow\" needs 4 values (x0 x1 y0 y1), got " + std::to_string(cw.size()));
+        for (float v : cw)
+            if (!std::isfinite(v))
+                throw InputError(params.location("cropwindow"), "\"cropwindow\" values must be finite numbers");
         if (!pb.empty())
             warning(params.location("cropwindow"), "both \"pixelbounds\" and \"cropwindow\" are given; "
                                                    "using the crop window");

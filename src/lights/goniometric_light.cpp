@@ -9,6 +9,7 @@ namespace caustica {
 GoniometricLight::GoniometricLight(const Transform &render_from_light, SpectrumPtr intensity, float scale,
                                    const RGBImage &image)
     : PointSourceLight(render_from_light.apply_point({0, 0, 0})), render_from_light_(render_from_light),
+      light_from_render_(render_from_light.inverse()),
       intensity_(std::move(intensity)), scale_(scale), resolution_(image.width) {
     values_.resize(size_t(image.width) * image.height);
     double sum = 0;
@@ -25,7 +26,7 @@ GoniometricLight::GoniometricLight(const Transform &render_from_light, SpectrumP
 
 // pbrt-v4 swaps y and z between light space and the diagram's sphere.
 Vec3f GoniometricLight::to_diagram(Vec3f w_render) const {
-    Vec3f w = normalize(render_from_light_.inverse().apply_vector(w_render));
+    Vec3f w = normalize(light_from_render_.apply_vector(w_render));
     return {w.x, w.z, w.y};
 }
 

@@ -36,7 +36,7 @@ class GoniometricLight final : public PointSourceLight {
     Vec3f to_diagram(Vec3f w_render) const;
     Vec3f from_diagram(Vec3f w_diagram) const;
 
-    Transform render_from_light_;
+    Transform render_from_light_, light_from_render_;
     SpectrumPtr intensity_;
     float scale_;
     int resolution_;

@@ -103,18 +103,23 @@ LightPtr create_spot(const Transform &render_from_light, const ParameterDictiona
                                        cone_angle, cone_angle - cone_delta);
 }
 
+// The image file of an image light's "filename" parameter, read as linear RGB; errors at the
+// parameter.
+RGBImage read_light_image(const ParameterDictionary &params, const std::string &filename) {
+    try {
+        return read_rgb_image(params.file_path("filename", filename));
+    } catch (const std::runtime_error &e) {
+        throw InputError(params.location("filename"), e.what());
+    }
+}
+
 LightPtr create_goniometric(const Transform &render_from_light, const ParameterDictionary &params) {
     SpectrumPtr I = light_spectrum(params, "I");
     float scale = photometric_scale(read_scale(params), *I);
     const std::string filename = params.get_one_string("filename", "");
     if (filename.empty())
         throw InputError(params.location("filename"), "goniometric: no \"filename\" (the diagram image) given");
-    RGBImage image;
-    try {
-        image = read_rgb_image(params.file_path("filename", filename));
-    } catch (const std::runtime_error &e) {
-        throw InputError(params.location("filename"), e.what());
-    }
+    RGBImage image = read_light_image(params, filename);
     if (image.width != image.height)
         throw InputError(params.location("filename"),
                          "\"" + filename + "\": resolution " + std::to_string(image.width) + "x" +
@@ -137,12 +142,7 @@ LightPtr create_projection(const Transform &render_from_light, const ParameterDi
     const std::string filename = params.get_one_string("filename", "");
     if (filename.empty())
         throw InputError(params.location("filename"), "projection: no \"filename\" (the projected image) given");
-    RGBImage image;
-    try {
-        image = read_rgb_image(params.file_path("filename", filename));
-    } catch (const std::runtime_error &e) {
-        throw InputError(params.location("filename"), e.what());
-    }
+    RGBImage image = read_light_image(params, filename);
     auto light = std::make_shared<ProjectionLight>(render_from_light, image, scale, fov);
     const float power = params.get_one_float("power", -1);
     if (power > 0 && light->unit_luminous_power() > 0)
@@ -198,13 +198,7 @@ LightPtr create_infinite(const Transform &render_from_light, const ParameterDict
         throw InputError(params.location("L"),
                          "an infinite light takes either \"L\" or \"filename\", not both");
 
-    std::string path = params.file_path("filename", filename);
-    RGBImage image;
-    try {
-        image = read_rgb_image(path);
-    } catch (const std::runtime_error &e) {
-        throw InputError(params.location("filename"), e.what());
-    }
+    RGBImage image = read_light_image(params, filename);
     EnvironmentMapping mapping = environment_mapping(image, params, filename);
     // Image values are RGB in sRGB (pbrt-v4 reads the file's colour space; files without one,
     // nearly all, are sRGB).

@@ -51,6 +51,11 @@ TEST(Cli, BadArgumentsExitWithStatusTwo) {
     EXPECT_EQ(run_caustica("render " + kCornell + " --integrator nonsense -o " + dir + "/a.exr"), 2);
     EXPECT_EQ(run_caustica("render " + dir + "/missing.pbrt -o " + dir + "/a.exr"), 2);
     EXPECT_EQ(run_caustica("render " + kCornell + " --spp 1 --time 1 -o " + dir + "/a.exr"), 2);
+    // Crop windows that are not numbers, empty, or incomplete.
+    EXPECT_EQ(run_caustica("render " + kCornell + " --spp 1 --cropwindow nan 1 0 1 -o " + dir + "/a.exr"), 2);
+    EXPECT_EQ(run_caustica("render " + kCornell + " --spp 1 --cropwindow 0.5 0.5 0 1 -o " + dir + "/a.exr"), 2);
+    EXPECT_EQ(run_caustica("render " + kCornell + " --spp 1 --pixelbounds 0 10 0 -o " + dir + "/a.exr"), 2);
+    EXPECT_EQ(run_caustica("merge " + dir + "/missing.exr -o " + dir + "/m.exr"), 2);
     EXPECT_EQ(run_caustica("frobnicate"), 2);
     EXPECT_FALSE(fs::exists(dir + "/a.exr"));
 }

@@ -14,15 +14,11 @@ using namespace caustica::testing;
 namespace {
 
 TEST(SphericalCamera, EquirectangularMatchesPbrtV4) {
-    const PbrtAgreement a = pbrt_agreement("cameras/spherical-equirect", "pt", 64);
-    EXPECT_LT(a.mean_relative_error, 0.01);
-    EXPECT_LT(a.worst_z, 5.0);
+    expect_agreement_with_pbrt("cameras/spherical-equirect", "pt", 64);
 }
 
 TEST(SphericalCamera, EqualAreaMatchesPbrtV4) {
-    const PbrtAgreement a = pbrt_agreement("cameras/spherical-equalarea", "pt", 64);
-    EXPECT_LT(a.mean_relative_error, 0.01);
-    EXPECT_LT(a.worst_z, 5.0);
+    expect_agreement_with_pbrt("cameras/spherical-equalarea", "pt", 64);
 }
 
 // Integrators that connect light paths to the lens refuse a camera without importance, at its

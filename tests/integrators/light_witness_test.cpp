@@ -17,9 +17,7 @@ class PbrtLights : public ::testing::TestWithParam<RenderCase> {};
 
 TEST_P(PbrtLights, MatchPbrtV4) {
     const RenderCase &c = GetParam();
-    const PbrtAgreement a = pbrt_agreement(c.scene, c.integrator, c.spp);
-    EXPECT_LT(a.mean_relative_error, 0.01);
-    EXPECT_LT(a.worst_z, 5.0);
+    expect_agreement_with_pbrt(c.scene, c.integrator, c.spp);
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, PbrtLights,

@@ -257,4 +257,11 @@ inline PbrtAgreement pbrt_agreement(const std::string &scene, const std::string 
     return result;
 }
 
+// The check as gtest expectations.
+inline void expect_agreement_with_pbrt(const std::string &scene, const std::string &integrator, int spp) {
+    const PbrtAgreement a = pbrt_agreement(scene, integrator, spp);
+    EXPECT_LT(a.mean_relative_error, 0.01) << scene << " " << integrator;
+    EXPECT_LT(a.worst_z, 5.0) << scene << " " << integrator;
+}
+
 } // namespace caustica::testing

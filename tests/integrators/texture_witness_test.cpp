@@ -18,9 +18,7 @@ using namespace caustica::testing;
 namespace {
 
 TEST(ProceduralTextures, NoiseTexturesMatchPbrtV4) {
-    const PbrtAgreement a = pbrt_agreement("textures/noise-textures", "pt", 64);
-    EXPECT_LT(a.mean_relative_error, 0.01);
-    EXPECT_LT(a.worst_z, 5.0);
+    expect_agreement_with_pbrt("textures/noise-textures", "pt", 64);
 }
 
 // Bump mapping ("displacement") and normal mapping ("normalmap") on flat squares under a slanting
@@ -28,9 +26,7 @@ TEST(ProceduralTextures, NoiseTexturesMatchPbrtV4) {
 // every pixel. Negative controls (one run each, then undone): the bump gradient's sign flipped
 // along u fails with |z| 37; the normal map read upside down (v for 1 - v) with |z| 325.
 TEST(ShadingNormals, BumpAndNormalMapsMatchPbrtV4) {
-    const PbrtAgreement a = pbrt_agreement("textures/bump-and-normal-map", "pt", 64);
-    EXPECT_LT(a.mean_relative_error, 0.01);
-    EXPECT_LT(a.worst_z, 5.0);
+    expect_agreement_with_pbrt("textures/bump-and-normal-map", "pt", 64);
 }
 
 } // namespace
