@@ -19,7 +19,7 @@ std::pair<int, int> footprint(float p, float r, int min, int max) {
 
 SplatBuffer::SplatBuffer(Vec2i bounds_min, Vec2i bounds_max, const Filter &filter)
     : min_(bounds_min), max_(bounds_max), filter_(&filter),
-      rows_per_band_(std::max(1, (bounds_max.y - bounds_min.y + kBands - 1) / kBands)) {}
+      rows_per_band_(std::max(kMinRowsPerBand, (bounds_max.y - bounds_min.y + kBands - 1) / kBands)) {}
 
 void SplatBuffer::allocate_sums() {
     std::call_once(sums_allocated_, [this] {
