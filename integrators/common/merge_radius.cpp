@@ -73,7 +73,7 @@ float default_medium_merge_radius(const Scene &scene, float surface_radius) {
     for (const MediumPtr &medium : scene.media)
         for (int i = 0; i < Samples; ++i) {
             const SampledWavelengths lambda = SampledWavelengths::sample_visible((i + 0.5f) / Samples);
-            largest_sigma_t = std::max(largest_sigma_t, (medium->sigma_a(lambda) + medium->sigma_s(lambda)).max_value());
+            largest_sigma_t = std::max(largest_sigma_t, medium->max_sigma_t(lambda).max_value());
         }
     return largest_sigma_t > 0 ? std::min(surface_radius, 0.1f / largest_sigma_t) : surface_radius;
 }

@@ -44,15 +44,17 @@ struct FreeFlightMIS {
     SampledSpectrum density{1.f};
 };
 
-// segment_length: distance to the surface hit, Infinity if the ray escapes. Draws one sampler
-// dimension when the path is in a medium, two the first time.
-inline PathSegment traverse_segment(const Medium *medium, const Material *absorbing_interior, float segment_length,
-                                    const SampledWavelengths &lambda, Sampler &sampler, FreeFlightMIS &mis) {
+// ray: the segment's start and unit direction; segment_length: distance to the surface hit,
+// Infinity if the ray escapes. Draws one sampler dimension when the path is in a medium, two the
+// first time.
+inline PathSegment traverse_segment(const Medium *medium, const Material *absorbing_interior, const Ray &ray,
+                                    float segment_length, const SampledWavelengths &lambda, Sampler &sampler,
+                                    FreeFlightMIS &mis) {
     PathSegment segment;
     segment.t = segment_length;
     if (medium) {
         if (mis.lane < 0) mis.lane = std::min(int(sampler.get_1d() * NumWavelengths), NumWavelengths - 1);
-        const MediumEvent event = medium->sample_distance(segment_length, lambda, mis.lane, sampler.get_1d());
+        const MediumEvent event = medium->sample_distance(ray, segment_length, lambda, mis.lane, sampler.get_1d());
         // f_i / mean_k p_k before and after the event, with the densities relative to the lane's.
         const SampledSpectrum density = mis.density * (event.density / event.density[mis.lane]);
         const float before = mis.density.average(), after = density.average();

@@ -35,9 +35,9 @@ WalkEvent SubpathWalk::advance() {
     while (true) {
         ++rays_;
         const bool hit = scene_.intersect(ray_, &si_);
-        const PathSegment segment = traverse_segment(medium_, absorbing_interior_,
-                                                     hit ? si_.t * length(ray_.d) : Infinity, lambda_, sampler_,
-                                                     free_flight_);
+        const float speed = length(ray_.d);
+        const PathSegment segment = traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed},
+                                                     hit ? si_.t * speed : Infinity, lambda_, sampler_, free_flight_);
         beta *= segment.weight;
         if (beta.is_black()) return WalkEvent::Ended;
         if (segment.scattered) {

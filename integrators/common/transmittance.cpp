@@ -19,8 +19,8 @@ SampledSpectrum transmittance(const Scene &scene, Ray ray, const Medium *medium,
         bool hit = scene.intersect(ray, &si);
         if (hit && si.material) return SampledSpectrum(0.f);
         if (medium) {
-            float distance = (hit ? si.t : ray.t_max) * length(ray.d);
-            T *= medium->transmittance(distance, lambda);
+            const float speed = length(ray.d);
+            T *= medium->transmittance(Ray{ray.o, ray.d / speed}, (hit ? si.t : ray.t_max) * speed, lambda);
             if (T.is_black()) return T;
         }
         if (!hit) return T;

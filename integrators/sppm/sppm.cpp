@@ -402,7 +402,7 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                         ++count;
                         add(SampledSpectrum(phase.p(vp.wo, decode_octahedral(photon.wi))) * photon.beta(), photon);
                     });
-                    const SampledSpectrum sigma_s = vp.medium->sigma_s(vp.lambda);
+                    const SampledSpectrum sigma_s = vp.medium->properties(vp.p, vp.lambda).sigma_s;
                     for (int i = 0; i < NumWavelengths; ++i) phi[i] = sigma_s[i] > 0 ? phi[i] / sigma_s[i] : 0.f;
                 } else {
                     surface_maps[g].for_each_within(vp.p, radius, [&](const StoredPhoton &photon) {

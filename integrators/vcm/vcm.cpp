@@ -420,7 +420,7 @@ SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
     });
-    const SampledSpectrum sigma_s = point.medium->sigma_s(ctx.lambda);
+    const SampledSpectrum sigma_s = point.medium->properties(point.p, ctx.lambda).sigma_s;
     SampledSpectrum inverse_sigma_s(0.f);
     for (int i = 0; i < NumWavelengths; ++i)
         if (sigma_s[i] > 0) inverse_sigma_s[i] = 1 / sigma_s[i];

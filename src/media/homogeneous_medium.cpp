@@ -55,21 +55,21 @@ SampledSpectrum HomogeneousMedium::sigma_s(const SampledWavelengths &lambda) con
     return sigma_s_->sample(lambda) * scale_;
 }
 
-SampledSpectrum HomogeneousMedium::transmittance(float distance, const SampledWavelengths &lambda) const {
+SampledSpectrum HomogeneousMedium::transmittance(const Ray &, float distance, const SampledWavelengths &lambda) const {
     return beer_lambert(sigma_a(lambda) + sigma_s(lambda), distance);
 }
 
-MediumEvent HomogeneousMedium::sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
+MediumEvent HomogeneousMedium::sample_distance(const Ray &, float t_max, const SampledWavelengths &lambda, int lane,
                                                float u_distance) const {
     return sample_homogeneous_distance(sigma_a(lambda), sigma_s(lambda), lambda.secondary_terminated(), t_max, lane,
                                        u_distance);
 }
 
-SampledSpectrum SampledHomogeneousMedium::transmittance(float distance, const SampledWavelengths &) const {
+SampledSpectrum SampledHomogeneousMedium::transmittance(const Ray &, float distance, const SampledWavelengths &) const {
     return beer_lambert(sigma_a_ + sigma_s_, distance);
 }
 
-MediumEvent SampledHomogeneousMedium::sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
+MediumEvent SampledHomogeneousMedium::sample_distance(const Ray &, float t_max, const SampledWavelengths &lambda, int lane,
                                                       float u_distance) const {
     return sample_homogeneous_distance(sigma_a_, sigma_s_, lambda.secondary_terminated(), t_max, lane, u_distance);
 }

@@ -12,12 +12,18 @@ class HomogeneousMedium final : public Medium {
     // sigma_a and sigma_s per unit length of the scene, already multiplied by "scale".
     HomogeneousMedium(SpectrumPtr sigma_a, SpectrumPtr sigma_s, float scale, float g);
 
-    SampledSpectrum sigma_a(const SampledWavelengths &lambda) const override;
-    SampledSpectrum sigma_s(const SampledWavelengths &lambda) const override;
+    SampledSpectrum sigma_a(const SampledWavelengths &lambda) const;
+    SampledSpectrum sigma_s(const SampledWavelengths &lambda) const;
+    MediumProperties properties(Vec3f, const SampledWavelengths &lambda) const override {
+        return {sigma_a(lambda), sigma_s(lambda)};
+    }
+    SampledSpectrum max_sigma_t(const SampledWavelengths &lambda) const override {
+        return sigma_a(lambda) + sigma_s(lambda);
+    }
     const HenyeyGreenstein &phase() const override { return phase_; }
-    SampledSpectrum transmittance(float distance, const SampledWavelengths &lambda) const override;
+    SampledSpectrum transmittance(const Ray &ray, float distance, const SampledWavelengths &lambda) const override;
     bool is_wavelength_independent() const override { return is_flat(*sigma_a_) && is_flat(*sigma_s_); }
-    MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
+    MediumEvent sample_distance(const Ray &ray, float t_max, const SampledWavelengths &lambda, int lane,
                                 float u_distance) const override;
 
   private:
@@ -38,11 +44,13 @@ class SampledHomogeneousMedium final : public Medium {
                              const Material *owner)
         : sigma_a_(sigma_a), sigma_s_(sigma_s), phase_(g), owner_(owner) {}
 
-    SampledSpectrum sigma_a(const SampledWavelengths &) const override { return sigma_a_; }
-    SampledSpectrum sigma_s(const SampledWavelengths &) const override { return sigma_s_; }
+    SampledSpectrum sigma_a(const SampledWavelengths &) const { return sigma_a_; }
+    SampledSpectrum sigma_s(const SampledWavelengths &) const { return sigma_s_; }
+    MediumProperties properties(Vec3f, const SampledWavelengths &) const override { return {sigma_a_, sigma_s_}; }
+    SampledSpectrum max_sigma_t(const SampledWavelengths &) const override { return sigma_a_ + sigma_s_; }
     const HenyeyGreenstein &phase() const override { return phase_; }
-    SampledSpectrum transmittance(float distance, const SampledWavelengths &lambda) const override;
-    MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
+    SampledSpectrum transmittance(const Ray &ray, float distance, const SampledWavelengths &lambda) const override;
+    MediumEvent sample_distance(const Ray &ray, float t_max, const SampledWavelengths &lambda, int lane,
                                 float u_distance) const override;
     const Material *interior_of() const override { return owner_; }
 

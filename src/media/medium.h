@@ -1,6 +1,8 @@
 // Participating media: what a ray travelling through a medium meets before it reaches the next
-// surface. Caustica's media are homogeneous (pbrt-v4's "homogeneous"); the interface is what the
-// integrators need from any medium, so that heterogeneous ones can be added beside it.
+// surface. Homogeneous media (pbrt-v4's "homogeneous") have closed-form transmittance and
+// free-flight distances; heterogeneous ones ("uniformgrid", "rgbgrid", "cloud", "nanovdb";
+// heterogeneous_medium.h) sample them by delta tracking and estimate transmittance by ratio
+// tracking against a majorant. The interface is what the integrators need from any medium.
 //
 // Chromatic media: a path carries NumWavelengths wavelengths, and the medium has a different
 // extinction for each. A medium samples a distance with the coefficients of one of them (the
@@ -11,6 +13,7 @@
 // 1 for every wavelength.
 #pragma once
 
+#include "geometry/ray.h"
 #include "media/phase_function.h"
 #include "spectral/sampled_spectrum.h"
 #include "spectral/sampled_wavelengths.h"
@@ -27,22 +30,34 @@ struct MediumEvent {
     // surface, or infinity) and t == t_max.
     bool scattered = false;
     float t = 0;
-    // Per wavelength: the event's contribution f, T(t) sigma_s when scattered and T(t_max) when
-    // passing (zero at terminated wavelengths), and its density had that wavelength's
-    // coefficients sampled it, sigma_t T(t) and T(t_max) (all 1 when nothing was sampled).
+    // Per wavelength: the event's contribution f, T(t) sigma_s(t) when scattered and T(t_max)
+    // when passing (zero at terminated wavelengths), and its density had that wavelength's
+    // coefficients sampled it, sigma_t(t) T(t) and T(t_max) (all 1 when nothing was sampled).
+    // With delta tracking the event is the whole chain of null collisions before it, and f and
+    // density are products over that chain (Miller et al. 2019). Only ratios are used: f and
+    // density may share one positive factor.
     SampledSpectrum f{0.f}, density{1.f};
+};
+
+// The coefficients at one point of a medium.
+struct MediumProperties {
+    SampledSpectrum sigma_a{0.f}, sigma_s{0.f};
 };
 
 class Medium {
   public:
-    virtual SampledSpectrum sigma_a(const SampledWavelengths &lambda) const = 0;
-    virtual SampledSpectrum sigma_s(const SampledWavelengths &lambda) const = 0;
+    // The coefficients at render-space point p (zero outside a grid's bounds).
+    virtual MediumProperties properties(Vec3f p, const SampledWavelengths &lambda) const = 0;
+    // An upper bound of sigma_t anywhere in the medium, at the given wavelengths.
+    virtual SampledSpectrum max_sigma_t(const SampledWavelengths &lambda) const = 0;
     virtual const HenyeyGreenstein &phase() const = 0;
-    // Transmittance exp(-integral of sigma_t) along a straight segment of the given length.
-    virtual SampledSpectrum transmittance(float distance, const SampledWavelengths &lambda) const = 0;
-    // Samples where a ray entering the medium first scatters, within distance t_max (may be
-    // Infinity), with the extinction of wavelength lambda[lane]; u_distance picks the distance.
-    virtual MediumEvent sample_distance(float t_max, const SampledWavelengths &lambda, int lane,
+    // Transmittance exp(-integral of sigma_t) from ray.o along the unit direction ray.d over the
+    // given distance (may be Infinity); heterogeneous media return an unbiased estimate.
+    virtual SampledSpectrum transmittance(const Ray &ray, float distance, const SampledWavelengths &lambda) const = 0;
+    // Samples where a ray leaving ray.o along the unit direction ray.d first scatters, within
+    // distance t_max (may be Infinity), with the extinction of wavelength lambda[lane];
+    // u_distance drives the sampling.
+    virtual MediumEvent sample_distance(const Ray &ray, float t_max, const SampledWavelengths &lambda, int lane,
                                         float u_distance) const = 0;
     // The material whose interior this medium is when the material made it for one entry point
     // (SampledHomogeneousMedium), else null.

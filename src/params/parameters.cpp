@@ -313,6 +313,14 @@ std::vector<std::string> ParameterDictionary::get_string_array(const std::string
     return p ? p->strings : std::vector<std::string>{};
 }
 
+std::vector<Vec3f> ParameterDictionary::get_rgb_array(const std::string &name) const {
+    const ParsedParameter *p = find_typed(name, {"rgb"});
+    std::vector<Vec3f> r;
+    if (p)
+        for (size_t i = 0; i < p->numbers.size() / 3; ++i) r.push_back(vec3_at(p->numbers, i));
+    return r;
+}
+
 SpectrumPtr ParameterDictionary::spectrum_from(const ParsedParameter &p, SpectrumType type) const {
     if (p.type == "rgb") {
         expect_single(p, p.numbers.size(), 3);

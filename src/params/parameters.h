@@ -75,6 +75,8 @@ class ParameterDictionary {
     std::vector<Vec3f> get_vector3_array(const std::string &name) const;
     std::vector<Vec2f> get_point2_array(const std::string &name) const;
     std::vector<std::string> get_string_array(const std::string &name) const;
+    // An "rgb" parameter's values, three at a time, as written (not checked for sign).
+    std::vector<Vec3f> get_rgb_array(const std::string &name) const;
     // "rgb", "spectrum" (constant value, named e.g. "glass-BK7"/"metal-Cu-eta", inline
     // lambda-value pairs, or a file name), "blackbody" -> a Spectrum of the given type.
     SpectrumPtr get_one_spectrum(const std::string &name, SpectrumPtr def, SpectrumType type) const;

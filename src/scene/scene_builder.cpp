@@ -164,7 +164,7 @@ using MediumTable = std::map<std::string, const Medium *>;
 MediumTable create_media(const SceneDescription &d, Scene &scene) {
     MediumTable table;
     for (const MediumEntity &m : d.media) {
-        scene.media.push_back(create_medium(m.type, m.params, m.loc));
+        scene.media.push_back(create_medium(m.type, m.params, m.loc, m.render_from_object));
         table[m.name] = scene.media.back().get();
     }
     scene.medium_count = d.media.size();

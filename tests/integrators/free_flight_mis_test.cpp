@@ -41,7 +41,7 @@ TEST(FreeFlightMIS, LongChromaticWalksAreUnbiasedAndBounded) {
         FreeFlightMIS mis;
         SampledSpectrum weight(1.f);
         for (int e = 0; e < Events; ++e) {
-            const PathSegment segment = traverse_segment(&medium, nullptr, Infinity, lambda, sampler, mis);
+            const PathSegment segment = traverse_segment(&medium, nullptr, Ray{}, Infinity, lambda, sampler, mis);
             ASSERT_TRUE(segment.scattered);
             weight *= segment.weight;
         }

@@ -1049,8 +1049,8 @@ TEST_F(DisneyMaterialTest, InteriorAbsorptionAndScatterDistance) {
     const Medium &medium = *solid->interior_medium();
     float alpha = random_walk_single_scattering_albedo(0.6f * 41 / 42);
     float sigma_t = 1 / random_walk_mean_free_path(0.5f, 0.6f);
-    EXPECT_NEAR(medium.sigma_s(lambda_)[0], alpha * sigma_t, 1e-4f * sigma_t);
-    EXPECT_NEAR(medium.sigma_a(lambda_)[2], (1 - alpha) * sigma_t + std::log(2.f) / 2, 1e-4f * sigma_t);
+    EXPECT_NEAR(medium.properties({}, lambda_).sigma_s[0], alpha * sigma_t, 1e-4f * sigma_t);
+    EXPECT_NEAR(medium.properties({}, lambda_).sigma_a[2], (1 - alpha) * sigma_t + std::log(2.f) / 2, 1e-4f * sigma_t);
     EXPECT_TRUE(at(*solid).subsurface);
     // Zero scatter distance everywhere is the diffuse BRDF: no volume.
     auto brdf = create({numbers("rgb", "scatterDistance", {0, 0, 0}, 2)});
@@ -1103,14 +1103,14 @@ TEST_F(DisneyMaterialTest, TexturedRandomWalkMakesTheVolumeOfTheEntryPoint) {
                                 numbers("spectrum", "transmittance", {0.5}, 4), numbers("float", "atDistance", {2}, 5)});
         const Medium &reference = *constant->interior_medium();
         for (int i = 0; i < NumWavelengths; ++i) {
-            EXPECT_NEAR(medium->sigma_s(lambda_)[i], reference.sigma_s(lambda_)[i], 1e-5f * reference.sigma_s(lambda_)[i]);
-            EXPECT_NEAR(medium->sigma_a(lambda_)[i], reference.sigma_a(lambda_)[i], 1e-5f * reference.sigma_a(lambda_)[i]);
+            EXPECT_NEAR(medium->properties({}, lambda_).sigma_s[i], reference.properties({}, lambda_).sigma_s[i], 1e-5f * reference.properties({}, lambda_).sigma_s[i]);
+            EXPECT_NEAR(medium->properties({}, lambda_).sigma_a[i], reference.properties({}, lambda_).sigma_a[i], 1e-5f * reference.properties({}, lambda_).sigma_a[i]);
         }
         ++compared;
     }
     EXPECT_EQ(compared, 2);
     // The two checks give different volumes.
-    EXPECT_GT(std::abs(at_first->sigma_s(lambda_)[0] - at_second->sigma_s(lambda_)[0]), 0.1f * at_first->sigma_s(lambda_)[0]);
+    EXPECT_GT(std::abs(at_first->properties({}, lambda_).sigma_s[0] - at_second->properties({}, lambda_).sigma_s[0]), 0.1f * at_first->properties({}, lambda_).sigma_s[0]);
 
     // At the second point, seen from inside (as a walk reaches it): a path in the first point's
     // volume keeps it when it turns back in, and leaves it when it crosses out; a path arriving
@@ -1148,8 +1148,8 @@ TEST_F(DisneyMaterialTest, TexturedScatterDistanceIsReadAtTheEntryPoint) {
                 const Medium *medium = textured->interior_medium(si, lambda_, scratch_);
                 ASSERT_TRUE(medium);
                 const Medium &reference = *constant->interior_medium();
-                EXPECT_NEAR(medium->sigma_s(lambda_)[0], reference.sigma_s(lambda_)[0], 1e-5f * reference.sigma_s(lambda_)[0]);
-                EXPECT_NEAR(medium->sigma_a(lambda_)[0], reference.sigma_a(lambda_)[0], 1e-5f * reference.sigma_a(lambda_)[0]);
+                EXPECT_NEAR(medium->properties({}, lambda_).sigma_s[0], reference.properties({}, lambda_).sigma_s[0], 1e-5f * reference.properties({}, lambda_).sigma_s[0]);
+                EXPECT_NEAR(medium->properties({}, lambda_).sigma_a[0], reference.properties({}, lambda_).sigma_a[0], 1e-5f * reference.properties({}, lambda_).sigma_a[0]);
             } else {
                 const float radius = as_profile(textured->subsurface_profile(si, lambda_)).max_radius(0);
                 EXPECT_FLOAT_EQ(radius, as_profile(constant->subsurface_profile(si, lambda_)).max_radius(0));

@@ -111,13 +111,13 @@ TEST(HomogeneousMedium, TransmittanceIsBeerLambert) {
     HomogeneousMedium medium(std::make_shared<ConstantSpectrum>(0.3f), std::make_shared<ConstantSpectrum>(0.5f), 2, 0);
     SampledWavelengths lambda = SampledWavelengths::sample_visible(0.4f);
     for (float d : {0.f, 0.01f, 1.f, 7.5f}) {
-        SampledSpectrum T = medium.transmittance(d, lambda);
+        SampledSpectrum T = medium.transmittance(Ray{}, d, lambda);
         for (int i = 0; i < NumWavelengths; ++i) EXPECT_NEAR(T[i], std::exp(-1.6 * d), 1e-6) << d;
     }
-    SampledSpectrum far = medium.transmittance(Infinity, lambda);
+    SampledSpectrum far = medium.transmittance(Ray{}, Infinity, lambda);
     EXPECT_EQ(far.max_value(), 0.f);
     HomogeneousMedium clear(std::make_shared<ConstantSpectrum>(0.f), std::make_shared<ConstantSpectrum>(0.f), 1, 0);
-    EXPECT_EQ(clear.transmittance(Infinity, lambda).average(), 1.f) << "a clear medium over infinity is 0 * inf";
+    EXPECT_EQ(clear.transmittance(Ray{}, Infinity, lambda).average(), 1.f) << "a clear medium over infinity is 0 * inf";
 }
 
 // The event's f and densities, with the lane drawn uniformly and the balance heuristic over
@@ -133,7 +133,7 @@ void check_free_flight(const HomogeneousMedium &medium, SampledWavelengths lambd
     float max_scattered_ratio = 0, max_passed = 0;
     for (int n = 0; n < 400000; ++n) {
         const int lane = std::min(int(rng.uniform() * NumWavelengths), NumWavelengths - 1);
-        MediumEvent e = medium.sample_distance(t_max, lambda, lane, rng.uniform());
+        MediumEvent e = medium.sample_distance(Ray{}, t_max, lambda, lane, rng.uniform());
         const SampledSpectrum weight = e.f / e.density.average();
         ASSERT_FALSE(weight.has_non_finite());
         ASSERT_LE(e.t, t_max);
@@ -179,9 +179,9 @@ TEST(HomogeneousMedium, AnAbsorbingMediumWeightsByTransmittance) {
     Rng rng(2, 2);
     for (int n = 0; n < 1000; ++n) {
         float t_max = 3 * rng.uniform();
-        MediumEvent e = medium.sample_distance(t_max, lambda, n % NumWavelengths, rng.uniform());
+        MediumEvent e = medium.sample_distance(Ray{}, t_max, lambda, n % NumWavelengths, rng.uniform());
         ASSERT_FALSE(e.scattered);
-        SampledSpectrum T = medium.transmittance(t_max, lambda);
+        SampledSpectrum T = medium.transmittance(Ray{}, t_max, lambda);
         for (int i = 0; i < NumWavelengths; ++i) {
             ASSERT_FLOAT_EQ(e.f[i], T[i]);
             ASSERT_EQ(e.density[i], 1.f);
@@ -200,7 +200,7 @@ TEST(HomogeneousMedium, FreeFlightDistancesFollowTheLanesExtinction) {
     std::vector<float> t(n);
     const int lane = 2;
     for (float &x : t) {
-        MediumEvent e = medium.sample_distance(Infinity, lambda, lane, rng.uniform());
+        MediumEvent e = medium.sample_distance(Ray{}, Infinity, lambda, lane, rng.uniform());
         ASSERT_TRUE(e.scattered);
         // The reported densities are each wavelength's exponential density there.
         for (int k = 0; k < NumWavelengths; ++k)
@@ -224,16 +224,16 @@ TEST(MediumFactory, ReadsPbrtParametersAndRejectsBadValues) {
     SampledWavelengths lambda = SampledWavelengths::sample_visible(0.5f);
 
     MediumPtr defaults = create_medium("homogeneous", dictionary({}), {});
-    EXPECT_NEAR(defaults->sigma_a(lambda)[0], 1, 1e-6f) << "pbrt-v4's default coefficients are 1";
-    EXPECT_NEAR(defaults->sigma_s(lambda)[2], 1, 1e-6f);
+    EXPECT_NEAR(defaults->properties({}, lambda).sigma_a[0], 1, 1e-6f) << "pbrt-v4's default coefficients are 1";
+    EXPECT_NEAR(defaults->properties({}, lambda).sigma_s[2], 1, 1e-6f);
 
     MediumPtr scaled = create_medium("homogeneous",
                                      dictionary({numbers("spectrum", "sigma_a", {0.25}, 2),
                                                  numbers("spectrum", "sigma_s", {0.5}, 3),
                                                  numbers("float", "scale", {4}, 4), numbers("float", "g", {0.6}, 5)}),
                                      {});
-    EXPECT_NEAR(scaled->sigma_a(lambda)[1], 1, 1e-6f);
-    EXPECT_NEAR(scaled->sigma_s(lambda)[1], 2, 1e-6f);
+    EXPECT_NEAR(scaled->properties({}, lambda).sigma_a[1], 1, 1e-6f);
+    EXPECT_NEAR(scaled->properties({}, lambda).sigma_s[1], 2, 1e-6f);
     EXPECT_FLOAT_EQ(scaled->phase().g(), 0.6f);
 
     auto error_line = [&](const std::string &type, std::vector<ParsedParameter> params) {
@@ -254,8 +254,8 @@ TEST(MediumFactory, ReadsPbrtParametersAndRejectsBadValues) {
                                    dictionary({strings("string", "preset", {"Skin1"}, 2), numbers("float", "scale", {1000}, 3)}),
                                    {});
     SampledWavelengths red = SampledWavelengths::fixed(640), blue = SampledWavelengths::fixed(450);
-    EXPECT_GT(skin->sigma_a(blue)[0], 5 * skin->sigma_a(red)[0]);
-    EXPECT_NEAR(skin->sigma_s(red)[0], 740, 150) << "sigma_s' of skin1 in red is 0.74 per mm";
+    EXPECT_GT(skin->properties({}, blue).sigma_a[0], 5 * skin->properties({}, red).sigma_a[0]);
+    EXPECT_NEAR(skin->properties({}, red).sigma_s[0], 740, 150) << "sigma_s' of skin1 in red is 0.74 per mm";
     EXPECT_EQ(error_line("homogeneous", {numbers("rgb", "Le", {0, 0, 0}, 3)}), -1) << "zero emission is allowed";
 }
 

@@ -1,0 +1,130 @@
+#include "media/heterogeneous_medium.h"
+
+#include "core/rng.h"
+
+#include <bit>
+#include <cmath>
+
+namespace caustica {
+
+namespace {
+
+// A stream of random numbers for one ray's tracking, from the ray and one sampler value.
+Rng tracking_rng(const Ray &ray, float u) {
+    const uint64_t key = hash_values(std::bit_cast<uint32_t>(ray.o.x), std::bit_cast<uint32_t>(ray.o.y),
+                                     std::bit_cast<uint32_t>(ray.o.z), std::bit_cast<uint32_t>(ray.d.x),
+                                     std::bit_cast<uint32_t>(ray.d.y), std::bit_cast<uint32_t>(ray.d.z));
+    return Rng(key, std::bit_cast<uint32_t>(u));
+}
+
+float exponential(Rng &rng, float rate) { return -std::log1p(-rng.uniform()) / rate; }
+
+Vec3f componentwise(Vec3f a, Vec3f b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+
+} // namespace
+
+HeterogeneousMedium::HeterogeneousMedium(const Transform &render_from_medium, const Bounds3f &bounds, float g,
+                                         MajorantGrid majorants)
+    : medium_from_render_(render_from_medium.inverse()), lo_(bounds.lo), phase_(g), majorants_(std::move(majorants)) {
+    const Vec3f extent = bounds.diagonal();
+    inverse_extent_ = {1 / extent.x, 1 / extent.y, 1 / extent.z};
+}
+
+void HeterogeneousMedium::to_unit_cube(const Ray &ray, Vec3f *o, Vec3f *d) const {
+    *o = componentwise(medium_from_render_.apply_point(ray.o) - lo_, inverse_extent_);
+    *d = componentwise(medium_from_render_.apply_vector(ray.d), inverse_extent_);
+}
+
+MediumProperties HeterogeneousMedium::properties(Vec3f p, const SampledWavelengths &lambda) const {
+    const Vec3f u = componentwise(medium_from_render_.apply_point(p) - lo_, inverse_extent_);
+    if (!(u.x >= 0 && u.x <= 1 && u.y >= 0 && u.y <= 1 && u.z >= 0 && u.z <= 1)) return {};
+    return local(u, lambda);
+}
+
+SampledSpectrum HeterogeneousMedium::transmittance(const Ray &ray, float distance,
+                                                   const SampledWavelengths &lambda) const {
+    Vec3f o, d;
+    to_unit_cube(ray, &o, &d);
+    Rng rng = tracking_rng(ray, distance);
+    const float scale = majorant_scale(lambda).max_value();
+    SampledSpectrum T(1.f);
+    majorants_.traverse(o, d, 0, distance, [&](const MajorantGrid::Segment &s) {
+        const float sigma_maj = scale * s.bound;
+        if (!(sigma_maj > 0)) return true;
+        for (float t = s.t0 + exponential(rng, sigma_maj); t < s.t1; t += exponential(rng, sigma_maj)) {
+            const MediumProperties mp = local(o + d * t, lambda);
+            const SampledSpectrum sigma_n = SampledSpectrum(sigma_maj) - mp.sigma_a - mp.sigma_s;
+            for (int i = 0; i < NumWavelengths; ++i) T[i] *= std::max(0.f, sigma_n[i]) / sigma_maj;
+            if (T.max_value() < 0.05f) {
+                // Russian roulette: an estimate this small is worth little more tracking.
+                if (rng.uniform() < 0.75f) {
+                    T = SampledSpectrum(0.f);
+                    return false;
+                }
+                T /= 0.25f;
+            }
+        }
+        return true;
+    });
+    return T;
+}
+
+MediumEvent HeterogeneousMedium::sample_distance(const Ray &ray, float t_max, const SampledWavelengths &lambda,
+                                                 int lane, float u_distance) const {
+    const int carried = lambda.secondary_terminated() ? 1 : NumWavelengths;
+    MediumEvent event;
+    event.t = t_max;
+    if (!may_scatter(lambda, carried)) {
+        // Nothing to sample: the event is the transmittance, as in an absorbing homogeneous medium.
+        event.f = transmittance(ray, t_max, lambda);
+    } else {
+        Vec3f o, d;
+        to_unit_cube(ray, &o, &d);
+        Rng rng = tracking_rng(ray, u_distance);
+        const SampledSpectrum scale = majorant_scale(lambda);
+        SampledSpectrum f(1.f), density(1.f);
+        // Multiplies f and density by the majorant transmittance over dt and one collision's
+        // factors, then divides both by the lane's density, so that the products of long chains
+        // of null collisions neither overflow nor underflow (only their ratios matter).
+        auto collide = [&](const SampledSpectrum &sigma_maj, float dt, const SampledSpectrum &f_event,
+                           const SampledSpectrum &density_event) {
+            const SampledSpectrum T_maj = exp(-sigma_maj * dt);
+            f *= T_maj * f_event;
+            density *= T_maj * density_event;
+            const float norm = density[lane];
+            if (norm > 0) {
+                f /= norm;
+                density /= norm;
+            }
+        };
+        majorants_.traverse(o, d, 0, t_max, [&](const MajorantGrid::Segment &s) {
+            const SampledSpectrum sigma_maj = scale * s.bound;
+            float t = s.t0;
+            while (true) {
+                const float dt = sigma_maj[lane] > 0 ? exponential(rng, sigma_maj[lane]) : Infinity;
+                if (t + dt >= s.t1) {
+                    collide(sigma_maj, s.t1 - t, SampledSpectrum(1.f), SampledSpectrum(1.f));
+                    return true;
+                }
+                t += dt;
+                const MediumProperties mp = local(o + d * t, lambda);
+                const SampledSpectrum sigma_t = mp.sigma_a + mp.sigma_s;
+                if (rng.uniform() * sigma_maj[lane] < sigma_t[lane]) {
+                    collide(sigma_maj, dt, mp.sigma_s, sigma_t);
+                    event.scattered = true;
+                    event.t = t;
+                    return false;
+                }
+                SampledSpectrum sigma_n = sigma_maj - sigma_t;
+                for (int i = 0; i < NumWavelengths; ++i) sigma_n[i] = std::max(0.f, sigma_n[i]);
+                collide(sigma_maj, dt, sigma_n, sigma_n);
+            }
+        });
+        event.f = f;
+        event.density = density;
+    }
+    for (int k = carried; k < NumWavelengths; ++k) event.f[k] = 0;
+    return event;
+}
+
+} // namespace caustica
