@@ -83,8 +83,11 @@ TEST_P(HardTransport, MatchesPbrtV4) {
 // - sppm, bpm and vcm on narrow-line: each wavelength group traces all its pixels at one set of
 //   wavelengths per iteration, so a light emitting in 8 nm is seen by few groups and the whole
 //   image's error is correlated (issue 19, spiky spectra in the photon integrators); and pt on
-//   narrow-line, whose variance there is about a hundred times bdpt's per sample (measured, not
-//   explained yet);
+//   narrow-line: the lamp is in view, and pt draws one set of wavelengths per camera sample, of
+//   which about one in eight falls in the 8 nm line, so the lamp's pixels are a lottery (per-pixel
+//   variance of the mean 1800 times bdpt's at 64 spp, and the image mean 5% apart between two
+//   seeds), while bdpt's light-tracing strategy splats every light path's first vertex onto
+//   them, thousands per sample pass;
 // - pt, lt and sppm on coated-low-roughness, whose near-specular coat (alpha 0.01) mirrors the
 //   small light onto the wall and the wall into the floor: pt finds that caustic only when a
 //   bounce off the wall happens to reflect into the light, and lt and sppm meet the coat's spike
