@@ -14,7 +14,9 @@ Rng tracking_rng(const Ray &ray, float u) {
     const uint64_t key = hash_values(std::bit_cast<uint32_t>(ray.o.x), std::bit_cast<uint32_t>(ray.o.y),
                                      std::bit_cast<uint32_t>(ray.o.z), std::bit_cast<uint32_t>(ray.d.x),
                                      std::bit_cast<uint32_t>(ray.d.y), std::bit_cast<uint32_t>(ray.d.z));
-    return Rng(key, std::bit_cast<uint32_t>(u));
+    // Both the stream and its starting state depend on everything: PCG32 streams that differ
+    // only in their increment start out correlated.
+    return Rng(key, hash_values(key, std::bit_cast<uint32_t>(u)));
 }
 
 float exponential(Rng &rng, float rate) { return -std::log1p(-rng.uniform()) / rate; }
