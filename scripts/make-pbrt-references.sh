@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Renders the pbrt-v4 references of the scenes that tests compare with pbrt-v4: the
-# hard-transport scenes (scenes/hard; see tests/data/pbrt-v4/hard/README.md) and the procedural
-# textures (scenes/textures), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
+# hard-transport scenes (scenes/hard; see tests/data/pbrt-v4/hard/README.md), the procedural
+# textures (scenes/textures), cameras, lights and heterogeneous media (scenes/cameras,
+# scenes/lights, scenes/media), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
 # not needed by any test: it needs a pbrt-v4 binary (PBRT, default ../shared/tools/pbrt-v4/pbrt)
 # and oiiotool, and takes about half an hour on 2 cores.
 #
@@ -40,7 +41,11 @@ textures/bump-and-normal-map 256
 cameras/spherical-equirect 64
 cameras/spherical-equalarea 64
 lights/goniometric 1024
-lights/projection 1024"
+lights/projection 1024
+media/smoke-uniformgrid 8192
+media/smoke-rgbgrid 8192
+media/ground-fog 8192
+media/cloud 8192"
 
 want=("$@")
 while read -r scene spp; do

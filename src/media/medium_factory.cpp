@@ -4,6 +4,7 @@
 #include "materials/subsurface_coefficients.h"
 #include "spectral/color_space.h"
 #include "spectral/rgb_spectrum.h"
+#include "media/cloud_medium.h"
 #include "media/grid_media.h"
 #include "media/homogeneous_medium.h"
 
@@ -136,6 +137,18 @@ MediumPtr create_rgb_grid(const ParameterDictionary &params, const SourceLocatio
                                            grid(sigma_a, "sigma_a"), grid(sigma_s, "sigma_s"), read_scale(params));
 }
 
+MediumPtr create_cloud(const ParameterDictionary &params, const Transform &render_from_medium) {
+    auto finite = [&](const char *name, float def) {
+        const float v = params.get_one_float(name, def);
+        if (!std::isfinite(v)) throw InputError(params.location(name), std::string("\"") + name + "\" must be finite");
+        return v;
+    };
+    const float density = finite("density", 1), wispiness = finite("wispiness", 1), frequency = finite("frequency", 5);
+    return std::make_shared<CloudMedium>(render_from_medium, read_bounds(params), read_coefficient(params, "sigma_a"),
+                                         read_coefficient(params, "sigma_s"), read_g(params), density, wispiness,
+                                         frequency);
+}
+
 // Emission ("Le", "Lescale", "temperature") is not rendered yet: an emissive medium is an error
 // rather than silently dark.
 void reject_emission(const ParameterDictionary &params) {
@@ -164,8 +177,10 @@ MediumPtr create_medium(const std::string &type, const ParameterDictionary &para
     if (type == "homogeneous") return create_homogeneous(params);
     if (type == "uniformgrid") return create_uniform_grid(params, loc, render_from_medium);
     if (type == "rgbgrid") return create_rgb_grid(params, loc, render_from_medium);
+    if (type == "cloud") return create_cloud(params, render_from_medium);
     throw InputError(loc, "medium type \"" + type +
-                              "\" is not supported (Caustica has \"homogeneous\", \"uniformgrid\" and \"rgbgrid\")");
+                              "\" is not supported (Caustica has \"homogeneous\", \"uniformgrid\", \"rgbgrid\" "
+                              "and \"cloud\")");
 }
 
 } // namespace caustica

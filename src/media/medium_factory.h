@@ -13,6 +13,8 @@
 // density times sigma_a and sigma_s.
 // "rgbgrid": "rgb sigma_a" and/or "rgb sigma_s" (one colour per voxel; a missing one is 1), nx,
 // ny, nz, p0, p1, scale and g.
+// "cloud": pbrt-v4's procedural cloud: "float density" (1), "float wispiness" (1), "float
+// frequency" (5), sigma_a, sigma_s, g, p0, p1 (cloud_medium.h).
 // The grids are placed by the transform in effect at MakeNamedMedium. Emission ("Le",
 // "Lescale", "temperature") is not rendered yet: a non-zero one is an error rather than silently
 // dark.

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "media/cloud_medium.h"
 #include "media/grid_media.h"
 #include "media/medium_factory.h"
 
@@ -196,6 +197,24 @@ TEST(UniformGridMedium, IsPlacedByItsTransformAndEmptyOutsideItsBox) {
     EXPECT_NEAR(medium.max_sigma_t(lambda)[0], 3 * (kA + kB * (kVoxels - 0.5f) / kVoxels), 1e-4f);
 }
 
+TEST(CloudMedium, DensityLiesInZeroToOneSolidAtTheBaseAndClearAtTheTop) {
+    // pbrt-v4's cloud: (1 - y) 4.5 density noise, clamped, plus 2 (0.5 - y) below y = 0.5.
+    const CloudMedium cloud(Transform(), Bounds3f{{0, 0, 0}, {1, 1, 1}}, std::make_shared<ConstantSpectrum>(1.f),
+                            std::make_shared<ConstantSpectrum>(1.f), 0, 1, 1, 5);
+    Rng rng(5, 5);
+    float largest = 0;
+    for (int n = 0; n < 20000; ++n) {
+        const Vec3f p{rng.uniform(), rng.uniform(), rng.uniform()};
+        const float d = cloud.density(p);
+        ASSERT_GE(d, 0);
+        ASSERT_LE(d, 1) << "the majorant of a cloud is sigma_t at density 1";
+        largest = std::max(largest, d);
+    }
+    EXPECT_GT(largest, 0.9f);
+    EXPECT_EQ(cloud.density({0.3f, 0.f, 0.7f}), 1) << "solid at its base";
+    EXPECT_EQ(cloud.density({0.3f, 1.f, 0.7f}), 0) << "clear at y = 1";
+}
+
 TEST(MediumFactory, ReadsGridMediaAndRejectsBadGrids) {
     MediumPtr grid = create_medium("uniformgrid",
                                    dictionary({numbers("float", "density", {0, 1, 2, 3, 4, 5}, 2), numbers("integer", "nx", {3}, 3),
@@ -230,6 +249,8 @@ TEST(MediumFactory, ReadsGridMediaAndRejectsBadGrids) {
     EXPECT_EQ(error_line("rgbgrid", {}), 1);
     EXPECT_EQ(error_line("rgbgrid", {numbers("rgb", "sigma_a", {1, 1, 1}, 2), numbers("rgb", "sigma_s", {1, 1, 1, 2, 2, 2}, 3)}), 3);
     EXPECT_EQ(error_line("rgbgrid", {numbers("rgb", "sigma_a", {1, 1, std::nan("")}, 2)}), 2);
+    EXPECT_EQ(error_line("cloud", {numbers("float", "wispiness", {std::nan("")}, 4)}), 4);
+    EXPECT_EQ(error_line("cloud", {numbers("float", "g", {1}, 5)}), 5);
     EXPECT_EQ(error_line("cloudy", {}), 1) << "an unknown type";
 }
 
