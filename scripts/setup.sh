@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libembree-dev libtbb-dev libopenexr-dev libopenimageio-dev openimageio-tools libflann-dev
-  libassimp-dev zlib1g-dev libosd-dev libcli11-dev
+  libassimp-dev zlib1g-dev libosd-dev libcli11-dev libnanovdb-dev libblosc-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
   chromium

@@ -7,6 +7,7 @@
 #include "media/cloud_medium.h"
 #include "media/grid_media.h"
 #include "media/homogeneous_medium.h"
+#include "media/nanovdb_medium.h"
 
 #include <algorithm>
 #include <array>
@@ -149,6 +150,30 @@ MediumPtr create_cloud(const ParameterDictionary &params, const Transform &rende
                                          frequency);
 }
 
+MediumPtr create_nanovdb(const ParameterDictionary &params, const SourceLocation &loc,
+                         const Transform &render_from_medium) {
+    const std::string file = params.get_one_string("filename", "");
+    if (file.empty()) throw InputError(loc, "a \"nanovdb\" medium needs \"string filename\"");
+    const std::string path = params.file_path("filename", file);
+    const std::string grid_name = params.get_one_string("gridname", "density");
+    const std::string temperature_name = params.get_one_string("temperaturename", "temperature");
+    NanoVDBMedium::Handle density, temperature;
+    try {
+        density = read_nanovdb_grid(path, grid_name);
+        if (params.get_one_float("Lescale", 1) > 0) temperature = read_nanovdb_grid(path, temperature_name);
+    } catch (const std::exception &e) {
+        throw InputError(params.location("filename"), "cannot read NanoVDB file \"" + file + "\": " + e.what());
+    }
+    if (!density)
+        throw InputError(params.location("filename"), "NanoVDB file \"" + file + "\" has no grid named \"" + grid_name + "\"");
+    if (temperature)
+        throw InputError(params.location("filename"), "NanoVDB file \"" + file + "\" has a \"" + temperature_name +
+                                                          "\" grid: emissive media are not supported yet (set "
+                                                          "\"float Lescale\" 0 to render it without emission)");
+    return std::make_shared<NanoVDBMedium>(render_from_medium, std::move(density), read_coefficient(params, "sigma_a"),
+                                           read_coefficient(params, "sigma_s"), read_scale(params), read_g(params));
+}
+
 // Emission ("Le", "Lescale", "temperature") is not rendered yet: an emissive medium is an error
 // rather than silently dark.
 void reject_emission(const ParameterDictionary &params) {
@@ -178,9 +203,10 @@ MediumPtr create_medium(const std::string &type, const ParameterDictionary &para
     if (type == "uniformgrid") return create_uniform_grid(params, loc, render_from_medium);
     if (type == "rgbgrid") return create_rgb_grid(params, loc, render_from_medium);
     if (type == "cloud") return create_cloud(params, render_from_medium);
+    if (type == "nanovdb") return create_nanovdb(params, loc, render_from_medium);
     throw InputError(loc, "medium type \"" + type +
-                              "\" is not supported (Caustica has \"homogeneous\", \"uniformgrid\", \"rgbgrid\" "
-                              "and \"cloud\")");
+                              "\" is not supported (Caustica has \"homogeneous\", \"uniformgrid\", \"rgbgrid\", "
+                              "\"cloud\" and \"nanovdb\")");
 }
 
 } // namespace caustica

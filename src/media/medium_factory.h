@@ -15,6 +15,8 @@
 // ny, nz, p0, p1, scale and g.
 // "cloud": pbrt-v4's procedural cloud: "float density" (1), "float wispiness" (1), "float
 // frequency" (5), sigma_a, sigma_s, g, p0, p1 (cloud_medium.h).
+// "nanovdb": "string filename" (a .nvdb file), "string gridname" (default "density"), sigma_a,
+// sigma_s, scale, g; a "temperature" grid (pbrt-v4's emission) is an error unless "Lescale" is 0.
 // The grids are placed by the transform in effect at MakeNamedMedium. Emission ("Le",
 // "Lescale", "temperature") is not rendered yet: a non-zero one is an error rather than silently
 // dark.

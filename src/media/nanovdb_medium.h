@@ -1,0 +1,43 @@
+// pbrt-v4's "nanovdb" medium: a density grid read from a NanoVDB file (Museth 2021, "NanoVDB: A
+// GPU-Friendly and Portable VDB Data Structure for Real-Time Rendering and Simulation") through
+// the NanoVDB library, interpolated trilinearly in index space and scaling sigma_a and sigma_s,
+// inside the grid's world bounding box (in the medium's space). Its majorants are pbrt-v4's: a
+// 64^3 grid whose cells hold the largest voxel value within one voxel of the cell.
+#pragma once
+
+#include "media/heterogeneous_medium.h"
+#include "spectral/spectrum.h"
+
+#include <nanovdb/util/GridHandle.h>
+#include <nanovdb/util/HostBuffer.h>
+
+#include <string>
+
+namespace caustica {
+
+class NanoVDBMedium final : public HeterogeneousMedium {
+  public:
+    using Handle = nanovdb::GridHandle<nanovdb::HostBuffer>;
+    // density: a handle holding a float grid (read_nanovdb_density_grid).
+    NanoVDBMedium(const Transform &render_from_medium, Handle density, SpectrumPtr sigma_a, SpectrumPtr sigma_s,
+                  float scale, float g);
+
+  protected:
+    MediumProperties local(Vec3f u, const SampledWavelengths &lambda) const override;
+    SampledSpectrum majorant_scale(const SampledWavelengths &lambda) const override;
+    bool may_scatter(const SampledWavelengths &lambda, int carried) const override;
+
+  private:
+    Handle handle_;
+    const nanovdb::FloatGrid *grid_;
+    Vec3f lo_, extent_;
+    SpectrumPtr sigma_a_, sigma_s_;
+    float scale_;
+};
+
+// Reads grid `name` from the NanoVDB file at path: a handle holding a float grid, or an empty
+// handle when the file has no grid of that name. Throws std::runtime_error when the file cannot
+// be read or the grid holds other than floats.
+NanoVDBMedium::Handle read_nanovdb_grid(const std::string &path, const std::string &name);
+
+} // namespace caustica
