@@ -1,0 +1,59 @@
+// Heterogeneous media in every integrator against pbrt-v4's volpath images of scenes/media/*.pbrt,
+// with the hard-transport suite's check (render_test_support.h: the image mean within 1%, every
+// 16x16 block within 5 standard errors, both images' variances estimated from two runs):
+// - smoke-uniformgrid: a chromatic "uniformgrid" smoke in a box of interface faces, lit from
+//   outside (empty, sparse and dense majorant cells; forward scattering);
+// - smoke-rgbgrid: the same box with per-voxel RGB coefficients (back scattering);
+// - cloud: pbrt-v4's procedural cloud in the same box (pt, bdpt and vcm);
+// - ground-fog: a "uniformgrid" fog that thins with height, with the camera and a spot light
+//   inside it. lt and bpm are left out there as in the hard-transport suite: with the camera in a
+//   scattering medium lt's estimator has infinite variance, and bpm merges alone.
+// bpm, merging alone, runs 1024 iterations: at 256 its kernel's bias was +1.3% and +1.8% on the
+// smokes (standard errors 0.5%).
+// Negative control (run once, then undone): a null collision's contribution computed with the
+// lane's majorant for every wavelength (sigma_maj[lane] - sigma_t instead of sigma_maj - sigma_t)
+// fails every smoke-uniformgrid case, 10-17% off with worst blocks at |z| 9 to 25; smoke-rgbgrid
+// passes, as it must, its majorant being the same for every wavelength.
+#include "render_test_support.h"
+
+#include <gtest/gtest.h>
+
+using namespace caustica::testing;
+
+namespace {
+
+class PbrtHeterogeneousMedia : public ::testing::TestWithParam<RenderCase> {};
+
+TEST_P(PbrtHeterogeneousMedia, MatchPbrtV4) {
+    const RenderCase &c = GetParam();
+    expect_agreement_with_pbrt(c.scene, c.integrator, c.spp);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, PbrtHeterogeneousMedia,
+                         ::testing::Values(RenderCase{"media/smoke-uniformgrid", "pt", 128},
+                                           RenderCase{"media/smoke-uniformgrid", "lt", 128},
+                                           RenderCase{"media/smoke-uniformgrid", "bdpt", 32},
+                                           RenderCase{"media/smoke-uniformgrid", "sppm", 128},
+                                           RenderCase{"media/smoke-uniformgrid", "bpm", 1024},
+                                           RenderCase{"media/smoke-uniformgrid", "vcm", 32},
+                                           RenderCase{"media/smoke-rgbgrid", "pt", 128},
+                                           RenderCase{"media/smoke-rgbgrid", "lt", 128},
+                                           RenderCase{"media/smoke-rgbgrid", "bdpt", 32},
+                                           RenderCase{"media/smoke-rgbgrid", "sppm", 128},
+                                           RenderCase{"media/smoke-rgbgrid", "bpm", 1024},
+                                           RenderCase{"media/smoke-rgbgrid", "vcm", 32},
+                                           RenderCase{"media/cloud", "pt", 128},
+                                           RenderCase{"media/cloud", "bdpt", 32},
+                                           RenderCase{"media/cloud", "vcm", 32},
+                                           RenderCase{"media/ground-fog", "pt", 1024},
+                                           RenderCase{"media/ground-fog", "bdpt", 64},
+                                           RenderCase{"media/ground-fog", "sppm", 256},
+                                           RenderCase{"media/ground-fog", "vcm", 64}),
+                         [](const ::testing::TestParamInfo<RenderCase> &info) {
+                             std::string scene = info.param.scene;
+                             for (char &ch : scene)
+                                 if (ch == '-') ch = '_';
+                             return scene.substr(scene.find('/') + 1) + "_" + info.param.integrator;
+                         });
+
+} // namespace
