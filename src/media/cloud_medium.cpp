@@ -27,9 +27,8 @@ Vec3f noise_gradient(Vec3f p) {
 
 CloudMedium::CloudMedium(const Transform &render_from_medium, const Bounds3f &bounds, SpectrumPtr sigma_a,
                          SpectrumPtr sigma_s, float g, float density, float wispiness, float frequency)
-    : HeterogeneousMedium(render_from_medium, bounds, g, unit_majorant()), lo_(bounds.lo), extent_(bounds.diagonal()),
-      sigma_a_(std::move(sigma_a)), sigma_s_(std::move(sigma_s)), density_(density), wispiness_(wispiness),
-      frequency_(frequency) {}
+    : ScalarDensityMedium(render_from_medium, bounds, g, unit_majorant(), std::move(sigma_a), std::move(sigma_s), 1),
+      lo_(bounds.lo), extent_(bounds.diagonal()), density_(density), wispiness_(wispiness), frequency_(frequency) {}
 
 float CloudMedium::density(Vec3f p) const {
     Vec3f pp = p * frequency_;
@@ -54,20 +53,8 @@ float CloudMedium::density(Vec3f p) const {
     return std::clamp(d, 0.f, 1.f);
 }
 
-MediumProperties CloudMedium::local(Vec3f u, const SampledWavelengths &lambda) const {
-    const float d = density(lo_ + Vec3f{u.x * extent_.x, u.y * extent_.y, u.z * extent_.z});
-    return {sigma_a_->sample(lambda) * d, sigma_s_->sample(lambda) * d};
-}
-
-SampledSpectrum CloudMedium::majorant_scale(const SampledWavelengths &lambda) const {
-    return sigma_a_->sample(lambda) + sigma_s_->sample(lambda);
-}
-
-bool CloudMedium::may_scatter(const SampledWavelengths &lambda, int carried) const {
-    const SampledSpectrum s = sigma_s_->sample(lambda);
-    for (int i = 0; i < carried; ++i)
-        if (s[i] > 0) return true;
-    return false;
+float CloudMedium::density_at(Vec3f u) const {
+    return density(lo_ + Vec3f{u.x * extent_.x, u.y * extent_.y, u.z * extent_.z});
 }
 
 } // namespace caustica

@@ -6,11 +6,10 @@
 #pragma once
 
 #include "media/heterogeneous_medium.h"
-#include "spectral/spectrum.h"
 
 namespace caustica {
 
-class CloudMedium final : public HeterogeneousMedium {
+class CloudMedium final : public ScalarDensityMedium {
   public:
     CloudMedium(const Transform &render_from_medium, const Bounds3f &bounds, SpectrumPtr sigma_a, SpectrumPtr sigma_s,
                 float g, float density, float wispiness, float frequency);
@@ -18,14 +17,10 @@ class CloudMedium final : public HeterogeneousMedium {
     // The density at point p of the medium's space (pbrt-v4's CloudMedium::Density).
     float density(Vec3f p) const;
 
-  protected:
-    MediumProperties local(Vec3f u, const SampledWavelengths &lambda) const override;
-    SampledSpectrum majorant_scale(const SampledWavelengths &lambda) const override;
-    bool may_scatter(const SampledWavelengths &lambda, int carried) const override;
-
   private:
+    float density_at(Vec3f u) const override;
+
     Vec3f lo_, extent_;
-    SpectrumPtr sigma_a_, sigma_s_;
     float density_, wispiness_, frequency_;
 };
 

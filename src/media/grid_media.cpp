@@ -13,24 +13,11 @@ float largest(const RGBUnboundedSpectrum &s) { return s.max_value(); }
 
 UniformGridMedium::UniformGridMedium(const Transform &render_from_medium, const Bounds3f &bounds, SpectrumPtr sigma_a,
                                      SpectrumPtr sigma_s, float scale, float g, VoxelGrid<float> density)
-    : HeterogeneousMedium(render_from_medium, bounds, g, density.majorants(kMajorantResolution, identity)),
-      sigma_a_(std::move(sigma_a)), sigma_s_(std::move(sigma_s)), scale_(scale), density_(std::move(density)) {}
+    : ScalarDensityMedium(render_from_medium, bounds, g, density.majorants(kMajorantResolution, identity),
+                          std::move(sigma_a), std::move(sigma_s), scale),
+      density_(std::move(density)) {}
 
-MediumProperties UniformGridMedium::local(Vec3f u, const SampledWavelengths &lambda) const {
-    const float d = density_.lookup(u, identity) * scale_;
-    return {sigma_a_->sample(lambda) * d, sigma_s_->sample(lambda) * d};
-}
-
-SampledSpectrum UniformGridMedium::majorant_scale(const SampledWavelengths &lambda) const {
-    return (sigma_a_->sample(lambda) + sigma_s_->sample(lambda)) * scale_;
-}
-
-bool UniformGridMedium::may_scatter(const SampledWavelengths &lambda, int carried) const {
-    const SampledSpectrum s = sigma_s_->sample(lambda);
-    for (int i = 0; i < carried; ++i)
-        if (s[i] * scale_ > 0) return true;
-    return false;
-}
+float UniformGridMedium::density_at(Vec3f u) const { return density_.lookup(u, identity); }
 
 namespace {
 

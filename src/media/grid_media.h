@@ -72,19 +72,14 @@ float VoxelGrid<T>::max_over(const Bounds3f &b, Convert convert) const {
 
 // "uniformgrid": sigma_a(p) = d(p) sigma_a, sigma_s(p) = d(p) sigma_s, with sigma_a and sigma_s
 // already multiplied by "scale". Majorant: the cell's largest density times sigma_t.
-class UniformGridMedium final : public HeterogeneousMedium {
+class UniformGridMedium final : public ScalarDensityMedium {
   public:
     UniformGridMedium(const Transform &render_from_medium, const Bounds3f &bounds, SpectrumPtr sigma_a,
                       SpectrumPtr sigma_s, float scale, float g, VoxelGrid<float> density);
 
-  protected:
-    MediumProperties local(Vec3f u, const SampledWavelengths &lambda) const override;
-    SampledSpectrum majorant_scale(const SampledWavelengths &lambda) const override;
-    bool may_scatter(const SampledWavelengths &lambda, int carried) const override;
-
   private:
-    SpectrumPtr sigma_a_, sigma_s_;
-    float scale_;
+    float density_at(Vec3f u) const override;
+
     VoxelGrid<float> density_;
 };
 

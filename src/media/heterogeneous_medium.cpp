@@ -129,4 +129,25 @@ MediumEvent HeterogeneousMedium::sample_distance(const Ray &ray, float t_max, co
     return event;
 }
 
+ScalarDensityMedium::ScalarDensityMedium(const Transform &render_from_medium, const Bounds3f &bounds, float g,
+                                         MajorantGrid majorants, SpectrumPtr sigma_a, SpectrumPtr sigma_s, float scale)
+    : HeterogeneousMedium(render_from_medium, bounds, g, std::move(majorants)), sigma_a_(std::move(sigma_a)),
+      sigma_s_(std::move(sigma_s)), scale_(scale) {}
+
+MediumProperties ScalarDensityMedium::local(Vec3f u, const SampledWavelengths &lambda) const {
+    const float d = density_at(u) * scale_;
+    return {sigma_a_->sample(lambda) * d, sigma_s_->sample(lambda) * d};
+}
+
+SampledSpectrum ScalarDensityMedium::majorant_scale(const SampledWavelengths &lambda) const {
+    return (sigma_a_->sample(lambda) + sigma_s_->sample(lambda)) * scale_;
+}
+
+bool ScalarDensityMedium::may_scatter(const SampledWavelengths &lambda, int carried) const {
+    const SampledSpectrum s = sigma_s_->sample(lambda);
+    for (int i = 0; i < carried; ++i)
+        if (s[i] * scale_ > 0) return true;
+    return false;
+}
+
 } // namespace caustica

@@ -28,6 +28,7 @@
 #include "core/transform.h"
 #include "media/majorant_grid.h"
 #include "media/medium.h"
+#include "spectral/spectrum.h"
 
 namespace caustica {
 
@@ -64,6 +65,27 @@ class HeterogeneousMedium : public Medium {
     Vec3f lo_, inverse_extent_;
     HenyeyGreenstein phase_;
     MajorantGrid majorants_;
+};
+
+// A heterogeneous medium whose coefficients are one scalar density field d(u) times spectra:
+// sigma_a(p) = d scale sigma_a, sigma_s(p) = d scale sigma_s (pbrt-v4's uniformgrid, cloud and
+// nanovdb). Its majorant cells bound d, and sigma_maj is that bound times scale sigma_t.
+class ScalarDensityMedium : public HeterogeneousMedium {
+  protected:
+    ScalarDensityMedium(const Transform &render_from_medium, const Bounds3f &bounds, float g, MajorantGrid majorants,
+                        SpectrumPtr sigma_a, SpectrumPtr sigma_s, float scale);
+    ~ScalarDensityMedium() = default;
+
+    // The density at point u of the unit cube over the bounds.
+    virtual float density_at(Vec3f u) const = 0;
+
+  private:
+    MediumProperties local(Vec3f u, const SampledWavelengths &lambda) const final;
+    SampledSpectrum majorant_scale(const SampledWavelengths &lambda) const final;
+    bool may_scatter(const SampledWavelengths &lambda, int carried) const final;
+
+    SpectrumPtr sigma_a_, sigma_s_;
+    float scale_;
 };
 
 } // namespace caustica

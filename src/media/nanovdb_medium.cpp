@@ -66,32 +66,19 @@ NanoVDBMedium::Handle read_nanovdb_grid(const std::string &path, const std::stri
 
 NanoVDBMedium::NanoVDBMedium(const Transform &render_from_medium, Handle density, SpectrumPtr sigma_a,
                              SpectrumPtr sigma_s, float scale, float g)
-    : HeterogeneousMedium(render_from_medium, world_bounds(float_grid(density)), g,
-                          nanovdb_majorants(float_grid(density))),
-      handle_(std::move(density)), grid_(&float_grid(handle_)), sigma_a_(std::move(sigma_a)),
-      sigma_s_(std::move(sigma_s)), scale_(scale) {
+    : ScalarDensityMedium(render_from_medium, world_bounds(float_grid(density)), g,
+                          nanovdb_majorants(float_grid(density)), std::move(sigma_a), std::move(sigma_s), scale),
+      handle_(std::move(density)), grid_(&float_grid(handle_)) {
     const Bounds3f bounds = world_bounds(*grid_);
     lo_ = bounds.lo;
     extent_ = bounds.diagonal();
 }
 
-MediumProperties NanoVDBMedium::local(Vec3f u, const SampledWavelengths &lambda) const {
+float NanoVDBMedium::density_at(Vec3f u) const {
     const Vec3f p = lo_ + Vec3f{u.x * extent_.x, u.y * extent_.y, u.z * extent_.z};
     const auto index = grid_->worldToIndexF(nanovdb::Vec3f(p.x, p.y, p.z));
     using Sampler = nanovdb::SampleFromVoxels<nanovdb::FloatGrid::TreeType, 1, false>;
-    const float d = Sampler(grid_->tree())(index) * scale_;
-    return {sigma_a_->sample(lambda) * d, sigma_s_->sample(lambda) * d};
-}
-
-SampledSpectrum NanoVDBMedium::majorant_scale(const SampledWavelengths &lambda) const {
-    return (sigma_a_->sample(lambda) + sigma_s_->sample(lambda)) * scale_;
-}
-
-bool NanoVDBMedium::may_scatter(const SampledWavelengths &lambda, int carried) const {
-    const SampledSpectrum s = sigma_s_->sample(lambda);
-    for (int i = 0; i < carried; ++i)
-        if (s[i] * scale_ > 0) return true;
-    return false;
+    return Sampler(grid_->tree())(index);
 }
 
 } // namespace caustica

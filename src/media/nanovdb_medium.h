@@ -6,7 +6,6 @@
 #pragma once
 
 #include "media/heterogeneous_medium.h"
-#include "spectral/spectrum.h"
 
 #include <nanovdb/util/GridHandle.h>
 #include <nanovdb/util/HostBuffer.h>
@@ -15,24 +14,19 @@
 
 namespace caustica {
 
-class NanoVDBMedium final : public HeterogeneousMedium {
+class NanoVDBMedium final : public ScalarDensityMedium {
   public:
     using Handle = nanovdb::GridHandle<nanovdb::HostBuffer>;
     // density: a handle holding a float grid (read_nanovdb_density_grid).
     NanoVDBMedium(const Transform &render_from_medium, Handle density, SpectrumPtr sigma_a, SpectrumPtr sigma_s,
                   float scale, float g);
 
-  protected:
-    MediumProperties local(Vec3f u, const SampledWavelengths &lambda) const override;
-    SampledSpectrum majorant_scale(const SampledWavelengths &lambda) const override;
-    bool may_scatter(const SampledWavelengths &lambda, int carried) const override;
-
   private:
+    float density_at(Vec3f u) const override;
+
     Handle handle_;
     const nanovdb::FloatGrid *grid_;
     Vec3f lo_, extent_;
-    SpectrumPtr sigma_a_, sigma_s_;
-    float scale_;
 };
 
 // Reads grid `name` from the NanoVDB file at path: a handle holding a float grid, or an empty

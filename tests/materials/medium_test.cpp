@@ -7,6 +7,7 @@
 // while the errors these checks exist to catch (a wrong density, a missing term of the mixture)
 // are biases of several percent, tens of standard errors at these sample counts.
 #include "chi_square.h"
+#include "medium_test_support.h"
 #include "param_helpers.h"
 
 #include "core/error.h"
@@ -23,31 +24,9 @@
 namespace caustica {
 namespace {
 
-// A coefficient that varies with wavelength, so the four wavelengths of a path see different
-// media (what the mixture sampling exists for).
-class LinearSpectrum final : public Spectrum {
-  public:
-    LinearSpectrum(float at_360, float at_830) : a_(at_360), b_((at_830 - at_360) / 470) {}
-    float operator()(float lambda) const override { return a_ + b_ * (lambda - 360); }
-    float max_value() const override { return std::max(a_, a_ + b_ * 470); }
-
-  private:
-    float a_, b_;
-};
-
-struct RunningMean {
-    double sum = 0, sum_sq = 0;
-    long n = 0;
-    void add(double x) { sum += x; sum_sq += x * x; ++n; }
-    double mean() const { return sum / n; }
-    double standard_error() const { return std::sqrt(std::max(0.0, sum_sq / n - mean() * mean()) / n); }
-};
-
-void expect_mean(const RunningMean &m, double expected, const std::string &what) {
-    EXPECT_LE(std::abs(m.mean() - expected), 4.5 * m.standard_error() + 1e-7)
-        << what << ": mean " << m.mean() << " expected " << expected << " (standard error "
-        << m.standard_error() << ")";
-}
+using testing::expect_mean;
+using testing::LinearSpectrum;
+using testing::RunningMean;
 
 TEST(HenyeyGreenstein, IntegratesToOneAndIsSymmetric) {
     for (float g : {-0.9f, -0.4f, 0.f, 0.3f, 0.8f, 0.95f}) {
