@@ -45,7 +45,8 @@ lights/projection 1024
 media/smoke-uniformgrid 8192
 media/smoke-rgbgrid 8192
 media/ground-fog 8192
-media/cloud 8192"
+media/cloud 8192
+media/emissive 8192"
 
 want=("$@")
 while read -r scene spp; do

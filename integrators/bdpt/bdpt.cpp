@@ -43,9 +43,12 @@ struct SubpathContext {
 // was sampled there with solid-angle density pdf_fwd, until max_count vertices exist; returns the
 // new count. beta is the throughput carried by the ray, medium the one it starts in. Camera
 // subpaths (Radiance) that leave the scene end in a vertex at infinity when there are environment
-// lights to receive.
+// lights to receive. Camera subpaths add the emission of emissive media they meet to *emitted
+// (with weight 1: no other strategy samples it), while fewer than max_count - 2 scattering
+// vertices lie behind (the path tracer's maxdepth rule).
 int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum &beta, float pdf_fwd,
-                TransportMode mode, const Medium *medium, PathVertex *path, int count, int max_count) {
+                TransportMode mode, const Medium *medium, PathVertex *path, int count, int max_count,
+                SampledSpectrum *emitted = nullptr) {
     const Scene &scene = ctx.scene;
     SubpathWalk walk(scene, mode, ctx.lambda, ctx.sample.sampler, ctx.sample.scratch, ctx.sample.rays, true);
     walk.start(ray, medium, beta);
@@ -53,6 +56,7 @@ int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum
     auto counted = [&] { return count - path[count - 1].jumps; };
     while (counted() < max_count) {
         const WalkEvent event = walk.advance();
+        if (emitted && counted() + 1 < max_count) *emitted += walk.emitted();
         if (event == WalkEvent::Ended) break;
         PathVertex &prev = path[count - 1];
         if (event == WalkEvent::Escaped) {
@@ -129,9 +133,10 @@ int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum
     return count;
 }
 
-// The camera subpath: the lens vertex, then up to max_count - 1 scattering vertices.
+// The camera subpath: the lens vertex, then up to max_count - 1 scattering vertices; the
+// emission of media along it is added to *emitted.
 int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathVertex *path,
-                   int max_count) {
+                   int max_count, SampledSpectrum *emitted) {
     PathVertex &lens = start_vertex(path[0]);
     lens.type = PathVertexType::Camera;
     lens.si.p = camera_ray.ray.o;
@@ -140,7 +145,7 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
     float pdf_pos, pdf_dir;
     ctx.scene.camera->pdf_we(camera_ray.ray, &pdf_pos, &pdf_dir);
     return random_walk(ctx, camera_ray.ray, camera_ray.weight, pdf_dir, TransportMode::Radiance, lens.medium,
-                       path, 1, max_count);
+                       path, 1, max_count, emitted);
 }
 
 // The light subpath: a light chosen by power, an emitted ray, then scattering vertices.
@@ -316,7 +321,9 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             // jump adds one that is not a bounce (PathVertex::after_jump), at most one per bounce.
             PathVertex *camera_vertices = new_vertices(sample.scratch, 2 * (max_depth + 2));
             PathVertex *light_vertices = new_vertices(sample.scratch, 2 * (max_depth + 1));
-            const int n_camera = camera_subpath(ctx, *camera_ray, camera_vertices, max_depth + 2);
+            SampledSpectrum medium_emission(0.f);
+            const int n_camera = camera_subpath(ctx, *camera_ray, camera_vertices, max_depth + 2, &medium_emission);
+            L += hero_only(medium_emission, lambda);
             const int n_light = light_subpath(ctx, light_vertices, max_depth + 1);
             for (int t = 1; t <= n_camera; ++t)
                 for (int s = 0; s <= n_light; ++s) {

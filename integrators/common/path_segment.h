@@ -18,6 +18,9 @@ struct PathSegment {
     bool scattered = false;   // the path scatters in the medium at distance t
     float t = 0;              // distance travelled along the segment
     SampledSpectrum weight{1.f}; // throughput factor (transmittance over its sampling density)
+    // Emission counted at the scattering event, on the scale of weight: the collision estimator
+    // of the medium's emission along the segment (MediumEvent::emitted). Zero unless it emits.
+    SampledSpectrum emitted{0.f};
 };
 
 // Multiple importance sampling over the wavelengths for the free-flight distances of one subpath
@@ -58,14 +61,19 @@ inline PathSegment traverse_segment(const Medium *medium, const Material *absorb
         // f_i / mean_k p_k before and after the event, with the densities relative to the lane's.
         const SampledSpectrum density = mis.density * (event.density / event.density[mis.lane]);
         const float before = mis.density.average(), after = density.average();
-        segment = {event.scattered, event.t, event.f * (before / (event.density[mis.lane] * after))};
+        const float mis_scale = before / (event.density[mis.lane] * after);
+        segment = {event.scattered, event.t, event.f * mis_scale, event.emitted * mis_scale};
         mis.density = density / density.max_value();
     }
     if (absorbing_interior) {
         SampledSpectrum sigma_a = absorbing_interior->interior_sigma_a(lambda);
         // A clear wavelength transmits fully even along an escaping (infinite) segment.
         for (int i = 0; i < NumWavelengths; ++i)
-            if (sigma_a[i] > 0) segment.weight[i] *= std::exp(-sigma_a[i] * segment.t);
+            if (sigma_a[i] > 0) {
+                const float T = std::exp(-sigma_a[i] * segment.t);
+                segment.weight[i] *= T;
+                segment.emitted[i] *= T;
+            }
     }
     return segment;
 }

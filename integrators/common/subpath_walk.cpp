@@ -32,12 +32,14 @@ void SubpathWalk::start(const Ray &ray, const Medium *medium, const SampledSpect
 
 WalkEvent SubpathWalk::advance() {
     after_jump_ = false;
+    emitted_ = SampledSpectrum(0.f);
     while (true) {
         ++rays_;
         const bool hit = scene_.intersect(ray_, &si_);
         const float speed = length(ray_.d);
         const PathSegment segment = traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed},
                                                      hit ? si_.t * speed : Infinity, lambda_, sampler_, free_flight_);
+        if (mode_ == TransportMode::Radiance) emitted_ += beta * segment.emitted;
         beta *= segment.weight;
         if (beta.is_black()) return WalkEvent::Ended;
         if (segment.scattered) {

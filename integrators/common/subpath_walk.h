@@ -13,7 +13,8 @@
 //   - dispersive termination of the secondary wavelengths (Wilkie et al. 2014; pbrt-v4's
 //     SampledWavelengths::TerminateSecondary);
 //   - the jump through a profile-subsurface solid (profile_subsurface.h);
-//   - Russian roulette.
+//   - Russian roulette;
+//   - on camera subpaths, the emission of emissive media met along each segment (emitted()).
 // An integrator drives it one vertex at a time:
 //
 //     SubpathWalk walk(scene, mode, lambda, sampler, scratch, rays);
@@ -83,6 +84,12 @@ class SubpathWalk {
     // Follows the ray to the next vertex: a medium scattering event, or a surface that scatters
     // or emits. Surfaces that do neither are crossed.
     WalkEvent advance();
+    // Radiance subpaths: the emission of emissive media that the last advance() collected, times
+    // the throughput (a collision estimator: counted where the medium scatters or absorbs the
+    // path, so it is there even when advance() returned Ended because the collision absorbed).
+    // Zero for importance subpaths. No other strategy samples these emitters (media are not
+    // lights), so every integrator counts it in full.
+    const SampledSpectrum &emitted() const { return emitted_; }
 
     // The vertex reached (after advance() returned Vertex). At a surface, hit() is the
     // intersection and vertex().bsdf may be null when the surface only emits.
@@ -129,6 +136,7 @@ class SubpathWalk {
     const Medium *medium_ = nullptr;
     const Material *absorbing_interior_ = nullptr;
     FreeFlightMIS free_flight_;
+    SampledSpectrum emitted_{0.f};
     SurfaceInteraction si_;
     ScatteringPoint point_;
     Vec3f previous_p_;

@@ -25,7 +25,8 @@ struct EmissionMIS {
 };
 
 // Radiance along a camera ray: next-event estimation at every non-specular vertex (surface or
-// medium), weighted against the walk's own hits on emitters by the power heuristic.
+// medium), weighted against the walk's own hits on emitters by the power heuristic. Emissive
+// media are not lights: their emission is what the walk collects (walk.emitted()).
 SampledSpectrum trace_path(const Scene &scene, int max_depth, const Ray &camera_ray, SampledWavelengths &lambda,
                            Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
     SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, scratch, rays, false);
@@ -43,6 +44,9 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, const Ray &camera_
     };
     while (true) {
         const WalkEvent event = walk.advance();
+        // Emissive media along the segment, counted as pbrt-v4's volpath counts them: while
+        // fewer than maxdepth scattering events lie behind.
+        if (depth < max_depth) L += walk.emitted();
         if (event == WalkEvent::Ended) break;
         if (event == WalkEvent::Escaped) {
             for (const Light *light : scene.infinite_lights) add_emission(*light, light->Le(walk.ray(), lambda), walk.ray().d);

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/octahedral.h"
 #include "core/sampling.h"
+#include "integrators/common/camera_importance.h"
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/light_sampling.h"
 #include "integrators/common/merge_radius.h"
@@ -57,6 +58,7 @@ SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
       wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
       seed_(uint64_t(params.get_one_int("seed", 0)) + scene.overrides.seed),
       photon_search_(read_photon_search(params)) {
+    refuse_emissive_media(scene, "sppm");
     if (max_depth_ < 0 || max_depth_ > StoredPhoton::MaxDepth)
         throw InputError(params.location("maxdepth"),
                          "\"maxdepth\" must lie in [0, " + std::to_string(StoredPhoton::MaxDepth) + "]");

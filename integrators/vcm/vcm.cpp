@@ -473,6 +473,10 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     };
     while (true) {
         const WalkEvent event = walk.advance();
+        // Emissive media along the segment: no light subpath starts in them, so the camera
+        // subpath's collision estimate is the only strategy and counts in full.
+        if (path_length < it.max_depth)
+            L += in_group_measure(walk.emitted(), lambda.secondary_terminated(), ctx.hero_scale);
         if (event == WalkEvent::Ended) break;
         if (event == WalkEvent::Escaped) {
             // Environment light: the camera path's own strategy, against next-event estimation

@@ -1,7 +1,7 @@
 #include "lights/image_infinite_light.h"
 
 #include "lights/equal_area_mapping.h"
-#include "lights/photometric.h"
+#include "spectral/photometric.h"
 #include "spectral/color_space.h"
 #include "spectral/rgb_spectrum.h"
 

@@ -4,7 +4,7 @@
 #include "lights/distant_light.h"
 #include "lights/goniometric_light.h"
 #include "lights/image_infinite_light.h"
-#include "lights/photometric.h"
+#include "spectral/photometric.h"
 #include "lights/point_light.h"
 #include "lights/projection_light.h"
 #include "lights/rgb_image.h"

@@ -1,6 +1,6 @@
 #include "lights/projection_light.h"
 
-#include "lights/photometric.h"
+#include "spectral/photometric.h"
 #include "spectral/rgb_spectrum.h"
 
 #include <algorithm>

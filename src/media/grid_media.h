@@ -1,7 +1,8 @@
 // pbrt-v4's two media given by voxel grids in the scene file (pbrt-v4 section 11.4.3):
 //   "uniformgrid": one density per voxel, which scales spectra sigma_a and sigma_s;
 //   "rgbgrid":     an RGB sigma_a and sigma_s per voxel, each made a spectrum (RGBUnboundedSpectrum).
-// Both are heterogeneous media (heterogeneous_medium.h) over the box p0-p1 of the medium's space.
+// Both are heterogeneous media (heterogeneous_medium.h) over the box p0-p1 of the medium's space,
+// and both may emit (pbrt-v4's "Le", "Lescale", and the uniform grid's "temperature").
 #pragma once
 
 #include "media/heterogeneous_medium.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace caustica {
@@ -70,17 +72,46 @@ float VoxelGrid<T>::max_over(const Bounds3f &b, Convert convert) const {
     return m;
 }
 
+// Blackbody emission (normalised to a peak of 1, as pbrt-v4's BlackbodySpectrum) at a grid's
+// temperature after pbrt-v4's "temperatureoffset" (or "temperaturecutoff") and
+// "temperaturescale"; none at or below 100 K, as in pbrt-v4.
+struct TemperatureEmission {
+    float offset = 0, scale = 1;
+    SampledSpectrum at(float temperature, const SampledWavelengths &lambda) const;
+};
+
+// A "uniformgrid" medium's emission (pbrt-v4's GridMedium): Le(u) = Lescale(u) times either
+// blackbody emission at the "temperature" grid's value or the "Le" spectrum. Lescale is a grid of
+// the density's resolution, or one value (a 1^3 grid, which pbrt-v4's interpolation makes fall to
+// half at the faces of the box), divided by the luminance of "Le" (pbrt-v4's photometric
+// normalisation of emission spectra).
+struct UniformGridEmission {
+    SpectrumPtr Le;                             // null: no "Le" (emissive only with a temperature)
+    std::optional<VoxelGrid<float>> temperature;
+    TemperatureEmission blackbody;
+    VoxelGrid<float> Le_scale{{1.f}, 1, 1, 1};
+
+    bool emissive() const { return temperature || Le; }
+    SampledSpectrum at(Vec3f u, const SampledWavelengths &lambda) const;
+};
+
 // "uniformgrid": sigma_a(p) = d(p) sigma_a, sigma_s(p) = d(p) sigma_s, with sigma_a and sigma_s
 // already multiplied by "scale". Majorant: the cell's largest density times sigma_t.
 class UniformGridMedium final : public ScalarDensityMedium {
   public:
     UniformGridMedium(const Transform &render_from_medium, const Bounds3f &bounds, SpectrumPtr sigma_a,
-                      SpectrumPtr sigma_s, float scale, float g, VoxelGrid<float> density);
+                      SpectrumPtr sigma_s, float scale, float g, VoxelGrid<float> density,
+                      UniformGridEmission emission = {});
+    bool is_emissive() const override { return emission_.emissive(); }
 
   private:
     float density_at(Vec3f u) const override;
+    SampledSpectrum local_Le(Vec3f u, const SampledWavelengths &lambda) const override {
+        return emission_.at(u, lambda);
+    }
 
     VoxelGrid<float> density_;
+    UniformGridEmission emission_;
 };
 
 // "rgbgrid": per-voxel RGB coefficients (a missing grid is 1 everywhere, as in pbrt-v4), times
@@ -88,18 +119,24 @@ class UniformGridMedium final : public ScalarDensityMedium {
 class RGBGridMedium final : public HeterogeneousMedium {
   public:
     // Either grid may be absent (empty optional-like: nullptr).
+    // Le: per-voxel emission (RGBIlluminantSpectrum), times Le_scale; may be absent.
     RGBGridMedium(const Transform &render_from_medium, const Bounds3f &bounds, float g,
                   std::unique_ptr<VoxelGrid<RGBUnboundedSpectrum>> sigma_a,
-                  std::unique_ptr<VoxelGrid<RGBUnboundedSpectrum>> sigma_s, float scale);
+                  std::unique_ptr<VoxelGrid<RGBUnboundedSpectrum>> sigma_s, float scale,
+                  std::unique_ptr<VoxelGrid<RGBIlluminantSpectrum>> Le = nullptr, float Le_scale = 0);
+    bool is_emissive() const override { return Le_ && Le_scale_ > 0; }
 
   protected:
     MediumProperties local(Vec3f u, const SampledWavelengths &lambda) const override;
     SampledSpectrum majorant_scale(const SampledWavelengths &) const override { return SampledSpectrum(1.f); }
     bool may_scatter(const SampledWavelengths &, int) const override { return scatters_; }
+    SampledSpectrum local_Le(Vec3f u, const SampledWavelengths &lambda) const override;
 
   private:
     std::unique_ptr<VoxelGrid<RGBUnboundedSpectrum>> sigma_a_, sigma_s_;
     float scale_;
+    std::unique_ptr<VoxelGrid<RGBIlluminantSpectrum>> Le_;
+    float Le_scale_;
     bool scatters_;
 };
 

@@ -37,10 +37,20 @@ void HeterogeneousMedium::to_unit_cube(const Ray &ray, Vec3f *o, Vec3f *d) const
     *d = componentwise(medium_from_render_.apply_vector(ray.d), inverse_extent_);
 }
 
-MediumProperties HeterogeneousMedium::properties(Vec3f p, const SampledWavelengths &lambda) const {
+std::optional<Vec3f> HeterogeneousMedium::unit_cube_point(Vec3f p) const {
     const Vec3f u = componentwise(medium_from_render_.apply_point(p) - lo_, inverse_extent_);
-    if (!(u.x >= 0 && u.x <= 1 && u.y >= 0 && u.y <= 1 && u.z >= 0 && u.z <= 1)) return {};
-    return local(u, lambda);
+    if (!(u.x >= 0 && u.x <= 1 && u.y >= 0 && u.y <= 1 && u.z >= 0 && u.z <= 1)) return std::nullopt;
+    return u;
+}
+
+MediumProperties HeterogeneousMedium::properties(Vec3f p, const SampledWavelengths &lambda) const {
+    const std::optional<Vec3f> u = unit_cube_point(p);
+    return u ? local(*u, lambda) : MediumProperties{};
+}
+
+SampledSpectrum HeterogeneousMedium::Le(Vec3f p, const SampledWavelengths &lambda) const {
+    const std::optional<Vec3f> u = unit_cube_point(p);
+    return u && is_emissive() ? local_Le(*u, lambda) : SampledSpectrum(0.f);
 }
 
 SampledSpectrum HeterogeneousMedium::transmittance(const Ray &ray, float distance,
@@ -76,7 +86,7 @@ MediumEvent HeterogeneousMedium::sample_distance(const Ray &ray, float t_max, co
     const int carried = lambda.secondary_terminated() ? 1 : NumWavelengths;
     MediumEvent event;
     event.t = t_max;
-    if (!may_scatter(lambda, carried)) {
+    if (!may_scatter(lambda, carried) && !is_emissive()) {
         // Nothing to sample: the event is the transmittance, as in an absorbing homogeneous medium.
         event.f = transmittance(ray, t_max, lambda);
     } else {
@@ -109,10 +119,13 @@ MediumEvent HeterogeneousMedium::sample_distance(const Ray &ray, float t_max, co
                     return true;
                 }
                 t += dt;
-                const MediumProperties mp = local(o + d * t, lambda);
+                const Vec3f u = o + d * t;
+                const MediumProperties mp = local(u, lambda);
                 const SampledSpectrum sigma_t = mp.sigma_a + mp.sigma_s;
                 if (rng.uniform() * sigma_maj[lane] < sigma_t[lane]) {
-                    collide(sigma_maj, dt, mp.sigma_s, sigma_t);
+                    collide(sigma_maj, dt, SampledSpectrum(1.f), sigma_t);
+                    if (is_emissive()) event.emitted = f * mp.sigma_a * local_Le(u, lambda);
+                    f *= mp.sigma_s;
                     event.scattered = true;
                     event.t = t;
                     return false;
@@ -125,7 +138,7 @@ MediumEvent HeterogeneousMedium::sample_distance(const Ray &ray, float t_max, co
         event.f = f;
         event.density = density;
     }
-    for (int k = carried; k < NumWavelengths; ++k) event.f[k] = 0;
+    for (int k = carried; k < NumWavelengths; ++k) event.f[k] = event.emitted[k] = 0;
     return event;
 }
 

@@ -14,7 +14,8 @@
 //   per wavelength, and the path's spectral MIS (FreeFlightMIS) weighs it as it weighs a
 //   homogeneous free flight: this is pbrt-v4's r_u bookkeeping in VolPathIntegrator. A real
 //   collision scatters with weight sigma_s / sigma_t, as in the homogeneous media (absorption is
-//   not sampled as an event).
+//   not sampled as an event). In an emissive medium it also reports the emission there,
+//   T sigma_a Le (MediumEvent::emitted): the collision estimator of the emission along the ray.
 // - Transmittance by ratio tracking (Cramer 1978; Novák et al. 2014, "Residual Ratio Tracking for
 //   Estimating Attenuation in Participating Media"): the product of sigma_n / sigma_maj over
 //   tentative collisions at the rate of the largest majorant over the carried wavelengths, an
@@ -30,6 +31,8 @@
 #include "media/medium.h"
 #include "spectral/spectrum.h"
 
+#include <optional>
+
 namespace caustica {
 
 class HeterogeneousMedium : public Medium {
@@ -42,6 +45,7 @@ class HeterogeneousMedium : public Medium {
     SampledSpectrum transmittance(const Ray &ray, float distance, const SampledWavelengths &lambda) const override;
     MediumEvent sample_distance(const Ray &ray, float t_max, const SampledWavelengths &lambda, int lane,
                                 float u_distance) const override;
+    SampledSpectrum Le(Vec3f p, const SampledWavelengths &lambda) const override;
 
   protected:
     // bounds: the box of the medium's space the coefficients fill; majorants: over that box as
@@ -56,10 +60,18 @@ class HeterogeneousMedium : public Medium {
     virtual SampledSpectrum majorant_scale(const SampledWavelengths &lambda) const = 0;
     // Whether sigma_s can be non-zero at any of the first `carried` wavelengths anywhere.
     virtual bool may_scatter(const SampledWavelengths &lambda, int carried) const = 0;
+    // Emissive media: the emitted radiance Le at point u of the unit cube.
+    virtual SampledSpectrum local_Le(Vec3f u, const SampledWavelengths &lambda) const {
+        (void)u;
+        (void)lambda;
+        return SampledSpectrum(0.f);
+    }
 
   private:
     // The ray in unit-cube coordinates (the same parameter t, as d is only scaled).
     void to_unit_cube(const Ray &ray, Vec3f *o, Vec3f *d) const;
+    // Point p in unit-cube coordinates, or nullopt outside the box.
+    std::optional<Vec3f> unit_cube_point(Vec3f p) const;
 
     Transform medium_from_render_;
     Vec3f lo_, inverse_extent_;

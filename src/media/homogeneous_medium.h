@@ -9,8 +9,10 @@ namespace caustica {
 
 class HomogeneousMedium final : public Medium {
   public:
-    // sigma_a and sigma_s per unit length of the scene, already multiplied by "scale".
-    HomogeneousMedium(SpectrumPtr sigma_a, SpectrumPtr sigma_s, float scale, float g);
+    // sigma_a and sigma_s per unit length of the scene, already multiplied by "scale"; Le (null:
+    // none) times Le_scale, the emitted radiance (pbrt-v4's "Le" and "Lescale").
+    HomogeneousMedium(SpectrumPtr sigma_a, SpectrumPtr sigma_s, float scale, float g, SpectrumPtr Le = nullptr,
+                      float Le_scale = 0);
 
     SampledSpectrum sigma_a(const SampledWavelengths &lambda) const;
     SampledSpectrum sigma_s(const SampledWavelengths &lambda) const;
@@ -21,6 +23,8 @@ class HomogeneousMedium final : public Medium {
         return sigma_a(lambda) + sigma_s(lambda);
     }
     const HenyeyGreenstein &phase() const override { return phase_; }
+    bool is_emissive() const override { return Le_ && Le_scale_ > 0; }
+    SampledSpectrum Le(Vec3f, const SampledWavelengths &lambda) const override;
     SampledSpectrum transmittance(const Ray &ray, float distance, const SampledWavelengths &lambda) const override;
     bool is_wavelength_independent() const override { return is_flat(*sigma_a_) && is_flat(*sigma_s_); }
     MediumEvent sample_distance(const Ray &ray, float t_max, const SampledWavelengths &lambda, int lane,
@@ -30,6 +34,8 @@ class HomogeneousMedium final : public Medium {
     SpectrumPtr sigma_a_, sigma_s_;
     float scale_;
     HenyeyGreenstein phase_;
+    SpectrumPtr Le_;
+    float Le_scale_;
 };
 
 // A homogeneous medium known only at one path's wavelengths: the interior a material makes for

@@ -37,6 +37,13 @@ struct MediumEvent {
     // density are products over that chain (Miller et al. 2019). Only ratios are used: f and
     // density may share one positive factor.
     SampledSpectrum f{0.f}, density{1.f};
+    // Emissive media: the emission collected at the collision, T(t) sigma_a(t) Le(t), on the
+    // scale of f (zero when the path passes). Over the density above, it is the collision
+    // estimator of the emission along the segment, the integral of T sigma_a Le (pbrt-v4's
+    // convention: emitted radiance per unit length is sigma_a Le). An emissive medium samples
+    // collisions even where it does not scatter, and a collision that only absorbs ends the
+    // path (f zero) after its emission is counted.
+    SampledSpectrum emitted{0.f};
 };
 
 // The coefficients at one point of a medium.
@@ -51,6 +58,14 @@ class Medium {
     // An upper bound of sigma_t anywhere in the medium, at the given wavelengths.
     virtual SampledSpectrum max_sigma_t(const SampledWavelengths &lambda) const = 0;
     virtual const HenyeyGreenstein &phase() const = 0;
+    // Emission: whether the medium emits anywhere, and the radiance Le it emits at render-space
+    // point p (isotropically; the light leaving per unit length is sigma_a Le).
+    virtual bool is_emissive() const { return false; }
+    virtual SampledSpectrum Le(Vec3f p, const SampledWavelengths &lambda) const {
+        (void)p;
+        (void)lambda;
+        return SampledSpectrum(0.f);
+    }
     // Transmittance exp(-integral of sigma_t) from ray.o along the unit direction ray.d over the
     // given distance (may be Infinity); heterogeneous media return an unbiased estimate.
     virtual SampledSpectrum transmittance(const Ray &ray, float distance, const SampledWavelengths &lambda) const = 0;

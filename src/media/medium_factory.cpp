@@ -8,6 +8,7 @@
 #include "media/grid_media.h"
 #include "media/homogeneous_medium.h"
 #include "media/nanovdb_medium.h"
+#include "spectral/photometric.h"
 
 #include <algorithm>
 #include <array>
@@ -43,6 +44,45 @@ float read_g(const ParameterDictionary &params) {
     return g;
 }
 
+// "Le" (an emission spectrum, null when absent or zero everywhere), checked to be finite and
+// non-negative.
+SpectrumPtr read_emission(const ParameterDictionary &params) {
+    SpectrumPtr Le = params.get_one_spectrum("Le", nullptr, SpectrumType::Illuminant);
+    if (!Le) return nullptr;
+    float lo, hi;
+    spectrum_range(*Le, &lo, &hi);
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo >= 0))
+        throw InputError(params.location("Le"), "\"Le\" must be finite and non-negative at every wavelength (its "
+                                                "values range over [" + std::to_string(lo) + ", " +
+                                                    std::to_string(hi) + "])");
+    return hi > 0 ? Le : nullptr;
+}
+
+// pbrt-v4 divides an emission spectrum by its luminance, so that "Le" gives only a colour and
+// "Lescale" the level (lights/photometric.h).
+float photometric_normalisation(const Spectrum &Le) {
+    const float y = spectrum_to_photometric(Le);
+    return y > 0 ? 1 / y : 0.f;
+}
+
+float read_Le_scale(const ParameterDictionary &params) {
+    const float s = params.get_one_float("Lescale", 1);
+    if (!(std::isfinite(s) && s >= 0))
+        throw InputError(params.location("Lescale"), "\"Lescale\" must be a finite non-negative number");
+    return s;
+}
+
+TemperatureEmission read_temperature_mapping(const ParameterDictionary &params) {
+    TemperatureEmission t;
+    const float cutoff = params.get_one_float("temperaturecutoff", 0);
+    t.offset = params.get_one_float("temperatureoffset", cutoff);
+    t.scale = params.get_one_float("temperaturescale", 1);
+    for (const char *name : {"temperatureoffset", "temperaturecutoff", "temperaturescale"})
+        if (params.has(name) && !std::isfinite(params.get_one_float(name, 0)))
+            throw InputError(params.location(name), std::string("\"") + name + "\" must be finite");
+    return t;
+}
+
 MediumPtr create_homogeneous(const ParameterDictionary &params) {
     SpectrumPtr sigma_a, sigma_s;
     std::string preset = params.get_one_string("preset", "");
@@ -60,8 +100,10 @@ MediumPtr create_homogeneous(const ParameterDictionary &params) {
         sigma_a = read_coefficient(params, "sigma_a");
         sigma_s = read_coefficient(params, "sigma_s");
     }
+    SpectrumPtr Le = read_emission(params);
+    const float Le_scale = Le ? read_Le_scale(params) * photometric_normalisation(*Le) : 0.f;
     return std::make_shared<HomogeneousMedium>(std::move(sigma_a), std::move(sigma_s), read_scale(params),
-                                               read_g(params));
+                                               read_g(params), std::move(Le), Le_scale);
 }
 
 // The box p0-p1 of the medium's space that a grid or cloud fills.
@@ -108,9 +150,33 @@ MediumPtr create_uniform_grid(const ParameterDictionary &params, const SourceLoc
     if (density.empty()) throw InputError(loc, "a \"uniformgrid\" medium needs \"float density\" values");
     const std::array<int, 3> n = read_resolution(params, "density", density.size());
     check_grid_values(params, "density", density.data(), density.size());
+    // Emission: a "temperature" grid or an "Le" spectrum, times "Lescale" (one value or a grid).
+    UniformGridEmission emission;
+    auto grid_of_density_size = [&](const std::string &name, float multiplier) {
+        std::vector<float> v = params.get_float_array(name);
+        read_resolution(params, name, v.size());
+        check_grid_values(params, name, v.data(), v.size());
+        for (float &x : v) x *= multiplier;
+        return VoxelGrid<float>(std::move(v), n[0], n[1], n[2]);
+    };
+    emission.Le = read_emission(params);
+    if (params.has("temperature")) {
+        if (emission.Le)
+            throw InputError(params.location("Le"), "\"Le\" and \"temperature\" were both given: a grid medium "
+                                                    "emits one or the other");
+        emission.temperature = grid_of_density_size("temperature", 1);
+        emission.blackbody = read_temperature_mapping(params);
+    }
+    const float norm = emission.Le ? photometric_normalisation(*emission.Le) : 1.f;
+    if (params.get_float_array("Lescale").size() > 1 || (params.has("Lescale") && density.size() == 1)) {
+        emission.Le_scale = grid_of_density_size("Lescale", norm);
+    } else {
+        emission.Le_scale = VoxelGrid<float>({read_Le_scale(params) * norm}, 1, 1, 1);
+    }
     return std::make_shared<UniformGridMedium>(render_from_medium, read_bounds(params), read_coefficient(params, "sigma_a"),
                                                read_coefficient(params, "sigma_s"), read_scale(params), read_g(params),
-                                               VoxelGrid<float>(std::move(density), n[0], n[1], n[2]));
+                                               VoxelGrid<float>(std::move(density), n[0], n[1], n[2]),
+                                               std::move(emission));
 }
 
 MediumPtr create_rgb_grid(const ParameterDictionary &params, const SourceLocation &loc,
@@ -134,8 +200,22 @@ MediumPtr create_rgb_grid(const ParameterDictionary &params, const SourceLocatio
         for (const Vec3f &c : rgb) spectra.emplace_back(cs, RGB{c.x, c.y, c.z});
         return std::make_unique<VoxelGrid<RGBUnboundedSpectrum>>(std::move(spectra), n[0], n[1], n[2]);
     };
+    const std::vector<Vec3f> Le = params.get_rgb_array("Le");
+    std::unique_ptr<VoxelGrid<RGBIlluminantSpectrum>> Le_grid;
+    if (!Le.empty()) {
+        if (sigma_a.empty())
+            throw InputError(params.location("Le"), "an emissive \"rgbgrid\" needs \"rgb sigma_a\": the emission is "
+                                                    "sigma_a Le");
+        read_resolution(params, "Le", Le.size());
+        check_grid_values(params, "Le", &Le[0].x, Le.size() * 3);
+        std::vector<RGBIlluminantSpectrum> spectra;
+        spectra.reserve(Le.size());
+        for (const Vec3f &c : Le) spectra.emplace_back(cs, RGB{c.x, c.y, c.z});
+        Le_grid = std::make_unique<VoxelGrid<RGBIlluminantSpectrum>>(std::move(spectra), n[0], n[1], n[2]);
+    }
     return std::make_shared<RGBGridMedium>(render_from_medium, read_bounds(params), read_g(params),
-                                           grid(sigma_a, "sigma_a"), grid(sigma_s, "sigma_s"), read_scale(params));
+                                           grid(sigma_a, "sigma_a"), grid(sigma_s, "sigma_s"), read_scale(params),
+                                           std::move(Le_grid), read_Le_scale(params));
 }
 
 MediumPtr create_cloud(const ParameterDictionary &params, const Transform &render_from_medium) {
@@ -157,48 +237,26 @@ MediumPtr create_nanovdb(const ParameterDictionary &params, const SourceLocation
     const std::string path = params.file_path("filename", file);
     const std::string grid_name = params.get_one_string("gridname", "density");
     const std::string temperature_name = params.get_one_string("temperaturename", "temperature");
+    const float Le_scale = read_Le_scale(params);
     NanoVDBMedium::Handle density, temperature;
     try {
         density = read_nanovdb_grid(path, grid_name);
-        if (params.get_one_float("Lescale", 1) > 0) temperature = read_nanovdb_grid(path, temperature_name);
+        if (Le_scale > 0) temperature = read_nanovdb_grid(path, temperature_name);
     } catch (const std::exception &e) {
         throw InputError(params.location("filename"), "cannot read NanoVDB file \"" + file + "\": " + e.what());
     }
     if (!density)
         throw InputError(params.location("filename"), "NanoVDB file \"" + file + "\" has no grid named \"" + grid_name + "\"");
-    if (temperature)
-        throw InputError(params.location("filename"), "NanoVDB file \"" + file + "\" has a \"" + temperature_name +
-                                                          "\" grid: emissive media are not supported yet (set "
-                                                          "\"float Lescale\" 0 to render it without emission)");
+    // As in pbrt-v4, a file without the temperature grid is a medium that does not emit.
     return std::make_shared<NanoVDBMedium>(render_from_medium, std::move(density), read_coefficient(params, "sigma_a"),
-                                           read_coefficient(params, "sigma_s"), read_scale(params), read_g(params));
-}
-
-// Emission ("Le", "Lescale", "temperature") is not rendered yet: an emissive medium is an error
-// rather than silently dark.
-void reject_emission(const ParameterDictionary &params) {
-    if (params.has("temperature"))
-        throw InputError(params.location("temperature"), "emissive media are not supported yet: remove \"temperature\"");
-    if (!params.has("Le")) return;
-    float hi = 0;
-    if (SpectrumPtr Le = params.get_one_spectrum("Le", nullptr, SpectrumType::Illuminant)) {
-        float lo;
-        spectrum_range(*Le, &lo, &hi);
-    } else {
-        for (const Vec3f &c : params.get_rgb_array("Le")) hi = std::max({hi, c.x, c.y, c.z});
-    }
-    const std::vector<float> Le_scale = params.get_float_array("Lescale");
-    float scale = Le_scale.empty() ? 1.f : 0.f;
-    for (float s : Le_scale) scale = std::max(scale, s);
-    if (hi * scale != 0)
-        throw InputError(params.location("Le"), "emissive media are not supported yet: \"Le\" must be zero");
+                                           read_coefficient(params, "sigma_s"), read_scale(params), read_g(params),
+                                           std::move(temperature), Le_scale, read_temperature_mapping(params));
 }
 
 } // namespace
 
 MediumPtr create_medium(const std::string &type, const ParameterDictionary &params, const SourceLocation &loc,
                         const Transform &render_from_medium) {
-    if (type == "homogeneous" || type == "uniformgrid" || type == "rgbgrid") reject_emission(params);
     if (type == "homogeneous") return create_homogeneous(params);
     if (type == "uniformgrid") return create_uniform_grid(params, loc, render_from_medium);
     if (type == "rgbgrid") return create_rgb_grid(params, loc, render_from_medium);

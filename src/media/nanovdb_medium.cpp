@@ -65,20 +65,29 @@ NanoVDBMedium::Handle read_nanovdb_grid(const std::string &path, const std::stri
 }
 
 NanoVDBMedium::NanoVDBMedium(const Transform &render_from_medium, Handle density, SpectrumPtr sigma_a,
-                             SpectrumPtr sigma_s, float scale, float g)
+                             SpectrumPtr sigma_s, float scale, float g, Handle temperature, float Le_scale,
+                             TemperatureEmission blackbody)
     : ScalarDensityMedium(render_from_medium, world_bounds(float_grid(density)), g,
                           nanovdb_majorants(float_grid(density)), std::move(sigma_a), std::move(sigma_s), scale),
-      handle_(std::move(density)), grid_(&float_grid(handle_)) {
+      handle_(std::move(density)), temperature_(std::move(temperature)), grid_(&float_grid(handle_)),
+      Le_scale_(Le_scale), blackbody_(blackbody) {
+    if (temperature_) temperature_grid_ = &float_grid(temperature_);
     const Bounds3f bounds = world_bounds(*grid_);
     lo_ = bounds.lo;
     extent_ = bounds.diagonal();
 }
 
-float NanoVDBMedium::density_at(Vec3f u) const {
+float NanoVDBMedium::sample(const nanovdb::FloatGrid &grid, Vec3f u) const {
     const Vec3f p = lo_ + Vec3f{u.x * extent_.x, u.y * extent_.y, u.z * extent_.z};
-    const auto index = grid_->worldToIndexF(nanovdb::Vec3f(p.x, p.y, p.z));
+    const auto index = grid.worldToIndexF(nanovdb::Vec3f(p.x, p.y, p.z));
     using Sampler = nanovdb::SampleFromVoxels<nanovdb::FloatGrid::TreeType, 1, false>;
-    return Sampler(grid_->tree())(index);
+    return Sampler(grid.tree())(index);
+}
+
+float NanoVDBMedium::density_at(Vec3f u) const { return sample(*grid_, u); }
+
+SampledSpectrum NanoVDBMedium::local_Le(Vec3f u, const SampledWavelengths &lambda) const {
+    return blackbody_.at(sample(*temperature_grid_, u), lambda) * Le_scale_;
 }
 
 } // namespace caustica

@@ -32,6 +32,7 @@ struct SceneFeatures {
     // paths, which camera paths find only by chance.
     bool caustic_paths = false;
     bool media = false;
+    bool emissive_media = false;         // a medium emits (Le or temperature)
     bool medium_boundaries = false;      // shapes without a material, which rays pass through
     bool subsurface = false;
     SceneProbe probe;                    // what camera and lights see (scene_probe.h)
@@ -74,6 +75,7 @@ class Scene {
     ParameterDictionary integrator_params;
     SourceLocation integrator_location;
     SourceLocation camera_location; // of the Camera directive (empty for pbrt-v4's default camera)
+    SourceLocation emissive_medium_location; // of the first emissive medium's MakeNamedMedium
     std::string output_filename;         // Film "filename"
     SceneFeatures features;
     RenderOverrides overrides;

@@ -166,6 +166,10 @@ MediumTable create_media(const SceneDescription &d, Scene &scene) {
     for (const MediumEntity &m : d.media) {
         scene.media.push_back(create_medium(m.type, m.params, m.loc, m.render_from_object));
         table[m.name] = scene.media.back().get();
+        if (scene.media.back()->is_emissive() && !scene.features.emissive_media) {
+            scene.features.emissive_media = true;
+            scene.emissive_medium_location = m.loc;
+        }
     }
     scene.medium_count = d.media.size();
     return table;
@@ -290,8 +294,9 @@ void add_lights(const SceneDescription &d, const MediumTable &media, Scene &scen
 const Spectrum *achromatic_colour(const Scene &scene) {
     for (const MaterialPtr &m : scene.materials)
         if (!m->is_wavelength_independent()) return nullptr;
+    // Emissive media are light sources with colours of their own (a blackbody's varies).
     for (const MediumPtr &m : scene.media)
-        if (!m->is_wavelength_independent()) return nullptr;
+        if (!m->is_wavelength_independent() || m->is_emissive()) return nullptr;
     const Spectrum *colour = nullptr, *dark = nullptr;
     for (const LightPtr &light : scene.lights) {
         const Spectrum *emitted = light->emission_spectrum();
@@ -344,7 +349,7 @@ IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool came
     // only merging renders, so vcm's connections would be cost without benefit.
     constexpr float SpecularDominated = 0.5f;
     if (features.probe.view_specular >= SpecularDominated &&
-        features.probe.lights_behind_specular >= SpecularDominated)
+        features.probe.lights_behind_specular >= SpecularDominated && !features.emissive_media)
         return {"sppm", "most of the image (" + percent(features.probe.view_specular) +
                             ") shows purely specular surfaces and most emitted light (" +
                             percent(features.probe.lights_behind_specular) +

@@ -7,7 +7,10 @@
 // - cloud: pbrt-v4's procedural cloud in the same box (pt, bdpt and vcm);
 // - ground-fog: a "uniformgrid" fog that thins with height, with the camera and a spot light
 //   inside it. lt and bpm are left out there as in the hard-transport suite: with the camera in a
-//   scattering medium lt's estimator has infinite variance, and bpm merges alone.
+//   scattering medium lt's estimator has infinite variance, and bpm merges alone;
+// - emissive: a blackbody-emitting "uniformgrid" fireball (temperature and Lescale grids) and a
+//   "rgbgrid" glow with per-voxel "rgb Le", beside a dim lamp, in pt, bdpt, vcm and bpm (lt and
+//   sppm refuse emissive media).
 // bpm, merging alone, runs 1024 iterations: at 256 its kernel's bias was +1.3% and +1.8% on the
 // smokes (standard errors 0.5%).
 // Negative control (run once, then undone): a null collision's contribution computed with the
@@ -48,7 +51,11 @@ INSTANTIATE_TEST_SUITE_P(Integrators, PbrtHeterogeneousMedia,
                                            RenderCase{"media/ground-fog", "pt", 1024},
                                            RenderCase{"media/ground-fog", "bdpt", 64},
                                            RenderCase{"media/ground-fog", "sppm", 256},
-                                           RenderCase{"media/ground-fog", "vcm", 64}),
+                                           RenderCase{"media/ground-fog", "vcm", 64},
+                                           RenderCase{"media/emissive", "pt", 256},
+                                           RenderCase{"media/emissive", "bdpt", 128},
+                                           RenderCase{"media/emissive", "vcm", 128},
+                                           RenderCase{"media/emissive", "bpm", 256}),
                          [](const ::testing::TestParamInfo<RenderCase> &info) {
                              std::string scene = info.param.scene;
                              for (char &ch : scene)

@@ -4,7 +4,7 @@
 
 #include "core/rng.h"
 #include "light_test_util.h"
-#include "lights/photometric.h"
+#include "spectral/photometric.h"
 #include "spectral/color_space.h"
 #include "spectral/rgb_spectrum.h"
 #include "test_disk.h"

@@ -163,6 +163,39 @@ TEST(UniformGridMedium, DeltaTrackingIsUnbiasedPerWavelength) {
     }
 }
 
+// Emission: at a real collision the event carries T sigma_a Le, so E[emitted / mean density] is
+// the integral of T sigma_a Le along the segment. With the albedo the same everywhere and Le
+// constant (a "Lescale" grid of ones, constant over the ray), that integral is
+// Le sigma_a / sigma_t (1 - T(t_max)), since d(optical depth) = sigma_t dt. Negative control (run
+// once, then undone): counting sigma_s instead of sigma_a fails every wavelength by over 2000
+// standard errors.
+TEST(UniformGridMedium, DeltaTrackingCountsTheEmissionAlongTheRay) {
+    LinearGrid g;
+    UniformGridEmission emission;
+    emission.Le = std::make_shared<ConstantSpectrum>(2.f);
+    emission.Le_scale = VoxelGrid<float>(std::vector<float>(kVoxels * 3 * 3, 1.f), kVoxels, 3, 3);
+    const UniformGridMedium medium(Transform(), Bounds3f{{0, 0, 0}, {1, 1, 1}}, g.sigma_a, g.sigma_s, g.scale, 0.f,
+                                   linear_density(), emission);
+    ASSERT_TRUE(medium.is_emissive());
+    const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.3f);
+    const SampledSpectrum sigma_a = g.sigma_a->sample(lambda), sigma_t = (sigma_a + g.sigma_s->sample(lambda)) * g.scale;
+    const float length = LinearGrid::x1 - LinearGrid::x0;
+    std::vector<RunningMean> emitted(NumWavelengths);
+    Rng rng(6, 6);
+    for (int n = 0; n < 200000; ++n) {
+        const int lane = std::min(int(rng.uniform() * NumWavelengths), NumWavelengths - 1);
+        const Ray ray{{LinearGrid::x0, 0.5f, 0.5f}, {1, 0, 0}};
+        const MediumEvent e = medium.sample_distance(ray, length, lambda, lane, rng.uniform());
+        for (int i = 0; i < NumWavelengths; ++i) emitted[i].add(e.emitted[i] / e.density.average());
+    }
+    const double tau = optical_length(LinearGrid::x0, LinearGrid::x1);
+    for (int i = 0; i < NumWavelengths; ++i) {
+        const double T = std::exp(-sigma_t[i] * tau);
+        expect_mean(emitted[i], 2 * sigma_a[i] * g.scale / sigma_t[i] * (1 - T), "emitted, wavelength " + std::to_string(i),
+                    1e-6);
+    }
+}
+
 TEST(UniformGridMedium, IsPlacedByItsTransformAndEmptyOutsideItsBox) {
     const Transform render_from_medium = Transform::translate({2, 0, 0}) * Transform::rotate(90, {0, 0, 1});
     UniformGridMedium medium(render_from_medium, Bounds3f{{0, 0, 0}, {1, 2, 1}}, std::make_shared<ConstantSpectrum>(1.f),
@@ -214,6 +247,26 @@ TEST(MediumFactory, ReadsGridMediaAndRejectsBadGrids) {
     EXPECT_NEAR(rgb->properties({0.5f, 0.5f, 0.75f}, lambda).sigma_s[0], 6, 0.05f);
     EXPECT_NEAR(rgb->properties({0.5f, 0.5f, 0.75f}, lambda).sigma_a[0], 2, 1e-4f) << "a missing grid is 1, times scale";
 
+    // Emission. pbrt-v4 divides "Le" by its luminance: a white "rgb Le" of luminance 1 is the
+    // colour space's illuminant, which is 1 at 560 nm only roughly, so the check is relative to
+    // the normalised illuminant itself.
+    MediumPtr hot = create_medium("uniformgrid",
+                                  dictionary({numbers("float", "density", {1}, 2), numbers("float", "temperature", {2000}, 3),
+                                              numbers("float", "temperatureoffset", {500}, 4),
+                                              numbers("float", "temperaturescale", {2}, 5)}),
+                                  {});
+    ASSERT_TRUE(hot->is_emissive());
+    // The 1^3 Lescale grid of pbrt-v4's default is 1 at the box's centre; (2000 - 500) 2 = 3000 K.
+    EXPECT_NEAR(hot->Le({0.5f, 0.5f, 0.5f}, lambda)[0], BlackbodySpectrum(3000)(550), 1e-4f);
+    // At a face both 1^3 grids, Lescale and temperature, fall to half: (1000 - 500) 2 = 1000 K.
+    EXPECT_NEAR(hot->Le({0.f, 0.5f, 0.5f}, lambda)[0] / (0.5f * BlackbodySpectrum(1000)(550)), 1, 1e-3f)
+        << "pbrt-v4's 1^3 grids fall to half at the faces";
+    MediumPtr cold = create_medium("uniformgrid",
+                                   dictionary({numbers("float", "density", {1}, 2), numbers("float", "temperature", {90}, 3)}),
+                                   {});
+    EXPECT_EQ(cold->Le({0.5f, 0.5f, 0.5f}, lambda)[0], 0) << "no emission at or below 100 K";
+    EXPECT_FALSE(grid->is_emissive());
+
     auto error_line = [&](const std::string &type, std::vector<ParsedParameter> params) {
         return input_error_line(
             [&] { create_medium(type, dictionary(std::move(params)), SourceLocation{"test.pbrt", 1, 1}); });
@@ -225,8 +278,25 @@ TEST(MediumFactory, ReadsGridMediaAndRejectsBadGrids) {
     EXPECT_EQ(error_line("uniformgrid", {numbers("float", "density", {1}, 5), numbers("integer", "ny", {0}, 7)}), 7);
     EXPECT_EQ(error_line("uniformgrid", {numbers("float", "density", {1}, 5), numbers("point3", "p1", {1, 0, 1}, 8)}), 8)
         << "a flat box";
-    EXPECT_EQ(error_line("uniformgrid", {numbers("float", "density", {1}, 5), numbers("float", "temperature", {900}, 9)}), 9)
-        << "emission is not rendered yet";
+    EXPECT_EQ(error_line("uniformgrid", {numbers("float", "density", {1}, 5), numbers("float", "temperature", {900, 900}, 9)}),
+              9)
+        << "2 temperatures for 1 voxel";
+    EXPECT_EQ(error_line("uniformgrid", {numbers("float", "density", {1}, 5), numbers("float", "temperature", {-1}, 9)}), 9)
+        << "a negative temperature";
+    EXPECT_EQ(error_line("uniformgrid", {numbers("float", "density", {1}, 5), numbers("float", "temperature", {900}, 9),
+                                         numbers("rgb", "Le", {1, 1, 1}, 10)}),
+              10)
+        << "both Le and temperature";
+    EXPECT_EQ(error_line("uniformgrid", {numbers("float", "density", {1, 1}, 5), numbers("integer", "nx", {2}, 6),
+                                         numbers("float", "Lescale", {1, 1, 1}, 11)}),
+              11)
+        << "a Lescale grid of the wrong size";
+    EXPECT_EQ(error_line("rgbgrid", {numbers("rgb", "sigma_s", {1, 1, 1}, 2), numbers("rgb", "Le", {1, 1, 1}, 3)}), 3)
+        << "emission without sigma_a";
+    EXPECT_EQ(error_line("rgbgrid", {numbers("rgb", "sigma_a", {1, 1, 1}, 2), numbers("rgb", "Le", {1, 1, 1, 1, 1, 1}, 3)}), 3)
+        << "2 emission values for 1 voxel";
+    EXPECT_EQ(error_line("homogeneous", {numbers("float", "Lescale", {-1}, 4), numbers("rgb", "Le", {1, 1, 1}, 3)}), 4)
+        << "a negative Lescale";
     EXPECT_EQ(error_line("rgbgrid", {}), 1);
     EXPECT_EQ(error_line("rgbgrid", {numbers("rgb", "sigma_a", {1, 1, 1}, 2), numbers("rgb", "sigma_s", {1, 1, 1, 2, 2, 2}, 3)}), 3);
     EXPECT_EQ(error_line("rgbgrid", {numbers("rgb", "sigma_a", {1, 1, std::nan("")}, 2)}), 2);

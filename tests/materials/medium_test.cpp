@@ -224,7 +224,8 @@ TEST(MediumFactory, ReadsPbrtParametersAndRejectsBadValues) {
     EXPECT_EQ(error_line("homogeneous", {numbers("spectrum", "sigma_a", {-0.1}, 8)}), 8);
     EXPECT_EQ(error_line("homogeneous", {numbers("rgb", "sigma_s", {1, std::nan(""), 1}, 9)}), 9);
     EXPECT_EQ(error_line("homogeneous", {numbers("float", "scale", {-2}, 6)}), 6);
-    EXPECT_EQ(error_line("homogeneous", {numbers("rgb", "Le", {1, 1, 1}, 3)}), 3);
+    EXPECT_EQ(error_line("homogeneous", {numbers("spectrum", "Le", {-1}, 3)}), 3) << "negative emission";
+    EXPECT_EQ(error_line("homogeneous", {numbers("rgb", "Le", {1, 1, 1}, 3)}), -1) << "an emissive medium";
     EXPECT_EQ(error_line("homogeneous", {strings("string", "preset", {"unobtainium"}, 4)}), 4);
     EXPECT_EQ(error_line("uniformgrid", {}), 1);
     // A Jensen et al. 2001 preset: skin1's sigma_a is (0.032, 0.17, 0.48) per mm, so at a red

@@ -1,4 +1,5 @@
-// Photometric conventions of pbrt-v4's lights (the PhysLight model of Langlands and Fascione):
+// Photometric conventions of pbrt-v4's emitters, its lights and emissive media (the PhysLight model
+// of Langlands and Fascione):
 // a light's spectrum only gives its colour. The spectrum is divided by its luminance integral
 // (spectrum_to_photometric), so "L" or "I" of any spectrum means 1 nit (or 1 candela) times
 // "scale", and the optional "power" / "illuminance" parameters then fix the absolute level.

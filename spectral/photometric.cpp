@@ -1,4 +1,4 @@
-#include "lights/photometric.h"
+#include "spectral/photometric.h"
 
 #include "spectral/color_space.h"
 #include "spectral/rgb_spectrum.h"
