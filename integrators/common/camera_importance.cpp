@@ -12,11 +12,4 @@ void require_camera_importance(const Scene &scene, const std::string &integrator
                                                          "model it (use pt or sppm)");
 }
 
-void refuse_emissive_media(const Scene &scene, const std::string &integrator) {
-    if (!scene.features.emissive_media) return;
-    throw InputError(scene.emissive_medium_location,
-                     integrator + " does not render emissive media: their light reaches it only along light paths, "
-                                  "and no light path starts in a medium yet (use pt, bdpt, vcm or bpm)");
-}
-
 } // namespace caustica

@@ -1,17 +1,44 @@
 #include "integrators/common/light_path_start.h"
 
 #include "lights/light_sampler.h"
+#include "media/medium_interface.h"
 #include "sampler/sampler.h"
 #include "scene/scene.h"
 
 namespace caustica {
 
-std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda) {
-    auto chosen = scene.light_sampler->sample(sampler.get_1d());
+namespace {
+
+// The medium at point p: the one on p's side of the first surface along a fixed direction that
+// separates two media, or, when no such surface lies that way, the camera's (a medium that
+// surrounds the camera without bounds). Surfaces that are no transition are passed through.
+const Medium *medium_at(const Scene &scene, Vec3f p) {
+    const Vec3f d = normalize(Vec3f{0.267f, 0.535f, 0.802f});
+    Ray ray{p, d, Infinity};
+    for (int crossed = 0; crossed < 64; ++crossed) {
+        SurfaceInteraction si;
+        if (!scene.intersect(ray, &si)) return scene.camera_medium;
+        if (si.medium_interface && si.medium_interface->is_transition())
+            return dot(d, si.n) > 0 ? si.medium_interface->inside : si.medium_interface->outside;
+        ray = si.spawn_ray(d);
+    }
+    return nullptr;
+}
+
+} // namespace
+
+std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda,
+                                               LightPathSources sources) {
+    const LightSampler &lights = sources == LightPathSources::LightsAndEmissiveMedia && scene.light_and_medium_sampler
+                                     ? *scene.light_and_medium_sampler
+                                     : *scene.light_sampler;
+    auto chosen = lights.sample(sampler.get_1d());
     const Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
     if (!chosen) return std::nullopt;
     auto les = chosen->light->sample_le(u_position, u_direction, lambda);
     if (!les || les->L.is_black() || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return std::nullopt;
+    if (chosen->light->type() == LightType::Volume && medium_at(scene, les->ray.o) != chosen->light->medium())
+        return std::nullopt;
     LightPathStart start{chosen->light, chosen->pmf, *les};
     if (les->n != Vec3f{}) start.cos_origin = abs_dot(les->n, normalize(les->ray.d));
     start.flux = les->L * (start.cos_origin / (chosen->pmf * les->pdf_pos * les->pdf_dir));

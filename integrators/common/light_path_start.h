@@ -18,7 +18,7 @@ struct LightPathStart {
     float pmf = 0;        // the probability of choosing the light
     LightLeSample les;    // the emitted ray, its radiance and its position and direction densities
     // |cos| between the ray and the light's surface normal; 1 for lights without a surface
-    // (point, spot, distant, infinite).
+    // (point, spot, distant, infinite, emissive media).
     float cos_origin = 1;
     // Le |cos| / (pmf pdf_pos pdf_dir): the flux the ray carries, per light path.
     SampledSpectrum flux{0.f};
@@ -28,9 +28,15 @@ struct LightPathStart {
     }
 };
 
+// Where light paths may start: the lights alone, or also emissive media (lights/medium_emitter.h)
+// for the integrators whose camera paths do not count the media's emission in full (lt, sppm).
+enum class LightPathSources { Lights, LightsAndEmissiveMedia };
+
 // Draws the light (one sampler dimension) and its ray (two 2D dimensions, drawn even when no
 // light can be chosen, so that the dimensions after it do not depend on the outcome). Empty when
-// nothing is emitted.
-std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda);
+// nothing is emitted, which includes a point drawn in an emissive medium's box that lies outside
+// the medium (beyond the interfaces that bound it).
+std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda,
+                                               LightPathSources sources = LightPathSources::Lights);
 
 } // namespace caustica

@@ -19,7 +19,6 @@ LightTracer::LightTracer(const ParameterDictionary &params, const Scene &scene)
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
     require_camera_importance(scene, "the light tracer (lt)");
-    refuse_emissive_media(scene, "the light tracer (lt)");
     if (!scene.infinite_lights.empty())
         warning(scene.integrator_location,
                 "the light tracer (lt) does not render environment lights seen directly by the "
@@ -45,9 +44,11 @@ void splat(const LightPathContext &ctx, Vec2f p_raster, const SampledSpectrum &L
     ctx.scene.film->add_splat(p_raster, L, lambda);
 }
 
-// The light path's first vertex, the point on an area light, connected to the lens (s = 1,
-// t = 1): emission seen directly by the camera. Estimate Le(wi) |cos_light| We / (pmf pdf_pos
-// pdf_lens), where sample_wi's pdf (solid angle at the light point) carries the lens geometry.
+// The light path's first vertex, the point on an area light or in an emissive medium, connected
+// to the lens (s = 1, t = 1): emission seen directly by the camera. Estimate Le(wi) |cos_light|
+// We / (pmf pdf_pos pdf_lens), where sample_wi's pdf (solid angle at the light point) carries the
+// lens geometry; a point in a medium has no cosine (its Le is sigma_a Le per unit length, and
+// pdf_pos per unit volume).
 void connect_light_vertex(const LightPathContext &ctx, const Light &light, const LightLeSample &les,
                           float light_pmf, const SampledWavelengths &lambda) {
     const Scene &scene = ctx.scene;
@@ -60,7 +61,8 @@ void connect_light_vertex(const LightPathContext &ctx, const Light &light, const
     if (!cs || !(cs->pdf > 0)) return;
     SampledSpectrum Le = light.L(p, les.n, Vec2f{}, cs->wi, lambda);
     if (Le.is_black()) return;
-    SampledSpectrum L = Le * cs->We * (abs_dot(les.n, cs->wi) / (light_pmf * les.pdf_pos * cs->pdf));
+    const float cosine = les.n == Vec3f{} ? 1.f : abs_dot(les.n, cs->wi);
+    SampledSpectrum L = Le * cs->We * (cosine / (light_pmf * les.pdf_pos * cs->pdf));
     if (L.is_black()) return;
     // Traced from the lens (in the camera's medium) towards the light point: when a two-sided
     // light is seen from the side opposite to the sampled emission direction, p lies on the
@@ -92,16 +94,22 @@ void trace_light_path(const LightPathContext &ctx) {
     Sampler &sampler = ctx.sample.sampler;
 
     SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
-    const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda);
+    const std::optional<LightPathStart> start =
+        start_light_path(scene, sampler, lambda, LightPathSources::LightsAndEmissiveMedia);
     if (!start) return;
-    if (start->light->type() == LightType::Area) connect_light_vertex(ctx, *start->light, start->les, start->pmf, lambda);
+    // A path from an emissive medium starts at an event of the medium (where the path tracer's
+    // collision estimator counts the emission), which counts towards max_depth as a scattering
+    // vertex does.
+    const bool from_medium = start->light->type() == LightType::Volume;
+    int depth = from_medium ? 1 : 0;
+    if ((start->light->type() == LightType::Area || from_medium) && depth <= ctx.max_depth)
+        connect_light_vertex(ctx, *start->light, start->les, start->pmf, lambda);
 
     // The emitted flux is kept apart from the walk's throughput, so that Russian roulette sees
     // the throughput on the same scale (starting at 1) as in the path tracer. The path starts in
     // the light's medium (for an area light, that on its shape's outside).
     SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.sample.scratch, ctx.sample.rays, false);
     walk.start(start->les.ray, start->light->medium(), SampledSpectrum(1.f));
-    int depth = 0;
     while (walk.advance() == WalkEvent::Vertex) {
         const ScatteringPoint &point = walk.vertex();
         if (!point.in_medium() && !point.bsdf) {

@@ -3,7 +3,6 @@
 #include "core/error.h"
 #include "core/octahedral.h"
 #include "core/sampling.h"
-#include "integrators/common/camera_importance.h"
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/light_sampling.h"
 #include "integrators/common/merge_radius.h"
@@ -58,7 +57,6 @@ SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
       wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
       seed_(uint64_t(params.get_one_int("seed", 0)) + scene.overrides.seed),
       photon_search_(read_photon_search(params)) {
-    refuse_emissive_media(scene, "sppm");
     if (max_depth_ < 0 || max_depth_ > StoredPhoton::MaxDepth)
         throw InputError(params.location("maxdepth"),
                          "\"maxdepth\" must lie in [0, " + std::to_string(StoredPhoton::MaxDepth) + "]");
@@ -200,6 +198,9 @@ void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const 
     };
     for (int depth = 0;; ++depth) {
         const WalkEvent event = walk.advance();
+        // Emissive media along the way, as the path tracer counts them: photons from the media
+        // bring only the light they send to the visible points.
+        if (depth < max_depth) L += walk.emitted();
         if (event == WalkEvent::Ended) return;
         if (event == WalkEvent::Escaped) {
             for (const Light *light : scene.infinite_lights)
@@ -263,14 +264,19 @@ void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const 
 void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, IterationPixelContext &ctx,
                   SppmPhotonMap &surface_photons, SppmPhotonMap &medium_photons) {
     Sampler &sampler = ctx.sampler;
-    const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda);
+    const std::optional<LightPathStart> start =
+        start_light_path(scene, sampler, lambda, LightPathSources::LightsAndEmissiveMedia);
     if (!start) return;
     // Area lights' paths leave into the medium outside their shape (the side they emit to).
     SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.sample_scratch, ctx.rays, false);
     walk.start(start->les.ray, start->light->medium(), SampledSpectrum(1.f));
     // Every scattering vertex so far was a specular bounce, from a light no camera path can hit.
     bool delta_caustic = is_delta_light(start->light->type());
-    for (int depth = 0; depth < max_depth && walk.advance() == WalkEvent::Vertex;) {
+    // A path from an emissive medium starts at an event of the medium, which counts as a
+    // scattering vertex (towards maxdepth, and as the one before its first photon): next-event
+    // estimation does not sample media, so its photons carry their direct light too.
+    const int first_depth = start->light->type() == LightType::Volume ? 1 : 0;
+    for (int depth = first_depth; depth < max_depth && walk.advance() == WalkEvent::Vertex;) {
         const ScatteringPoint &point = walk.vertex();
         if (!point.in_medium() && !point.bsdf) {
             walk.pass_through();

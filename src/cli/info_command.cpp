@@ -36,6 +36,7 @@ int run_info(const std::string &scene_path) {
     std::printf("  caustic paths:             %s\n", yes_no(f.caustic_paths));
     std::printf("  absorbing interiors:       %s\n", yes_no(f.absorbing_interiors));
     std::printf("  participating media:       %s\n", yes_no(f.media));
+    std::printf("  emissive media:            %s\n", yes_no(f.emissive_media));
     std::printf("  subsurface scattering:     %s\n", yes_no(f.subsurface));
     if (f.achromatic)
         std::printf("  achromatic:                yes (rendered at %.0f nm, no colour noise)\n",

@@ -20,6 +20,7 @@ enum class LightType {
     DeltaDirection, // distant
     Area,           // emission from a shape's surface
     Infinite,       // emission from infinitely far away (environment)
+    Volume,         // emission from inside a participating medium (medium_emitter.h)
 };
 inline bool is_delta_light(LightType t) {
     return t == LightType::DeltaPosition || t == LightType::DeltaDirection;

@@ -2,6 +2,7 @@
 
 #include "core/rng.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -30,6 +31,13 @@ HeterogeneousMedium::HeterogeneousMedium(const Transform &render_from_medium, co
     : medium_from_render_(render_from_medium.inverse()), lo_(bounds.lo), phase_(g), majorants_(std::move(majorants)) {
     const Vec3f extent = bounds.diagonal();
     inverse_extent_ = {1 / extent.x, 1 / extent.y, 1 / extent.z};
+    render_from_unit_cube_ = render_from_medium * Transform::translate(bounds.lo) *
+                             Transform::scale(extent.x, extent.y, extent.z);
+    const auto &m = render_from_medium.matrix().m;
+    const float det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                      m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                      m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    render_volume_ = std::abs(det) * extent.x * extent.y * extent.z;
 }
 
 void HeterogeneousMedium::to_unit_cube(const Ray &ray, Vec3f *o, Vec3f *d) const {
@@ -51,6 +59,84 @@ MediumProperties HeterogeneousMedium::properties(Vec3f p, const SampledWavelengt
 SampledSpectrum HeterogeneousMedium::Le(Vec3f p, const SampledWavelengths &lambda) const {
     const std::optional<Vec3f> u = unit_cube_point(p);
     return u && is_emissive() ? local_Le(*u, lambda) : SampledSpectrum(0.f);
+}
+
+std::vector<SampledSpectrum> HeterogeneousMedium::cell_emission(const SampledWavelengths &lambda) const {
+    constexpr int k = 4; // points per axis and cell
+    const int nx = majorants_.nx(), ny = majorants_.ny(), nz = majorants_.nz();
+    std::vector<SampledSpectrum> mean(size_t(nx) * ny * nz, SampledSpectrum(0.f));
+    for (int z = 0; z < nz; ++z)
+        for (int y = 0; y < ny; ++y)
+            for (int x = 0; x < nx; ++x) {
+                SampledSpectrum &m = mean[(size_t(z) * ny + y) * nx + x];
+                if (!(majorants_.at(x, y, z) > 0)) continue;
+                for (int i = 0; i < k * k * k; ++i) {
+                    const Vec3f u{(x + (i % k + 0.5f) / k) / nx, (y + (i / k % k + 0.5f) / k) / ny,
+                                  (z + (i / (k * k) + 0.5f) / k) / nz};
+                    m += local(u, lambda).sigma_a * local_Le(u, lambda);
+                }
+                m /= float(k * k * k);
+            }
+    return mean;
+}
+
+const DiscreteDistribution &HeterogeneousMedium::emission_cells() const {
+    std::call_once(emission_cells_built_, [this] {
+        // Eight wavelengths, two sets of four spread by the visible density (which favours the
+        // wavelengths the eye sees best).
+        std::vector<float> emission, support;
+        for (float u : {0.2f, 0.7f}) {
+            const SampledWavelengths lambda = SampledWavelengths::sample_visible(u);
+            const std::vector<SampledSpectrum> e = cell_emission(lambda);
+            emission.resize(e.size(), 0.f);
+            for (size_t c = 0; c < e.size(); ++c) emission[c] += e[c].average();
+        }
+        double emission_sum = 0, support_sum = 0;
+        support.resize(emission.size());
+        for (int z = 0, c = 0; z < majorants_.nz(); ++z)
+            for (int y = 0; y < majorants_.ny(); ++y)
+                for (int x = 0; x < majorants_.nx(); ++x, ++c) {
+                    support[c] = majorants_.at(x, y, z) > 0 ? 1.f : 0.f;
+                    emission_sum += emission[c];
+                    support_sum += support[c];
+                }
+        std::vector<float> weights(emission.size(), 0.f);
+        for (size_t c = 0; c < weights.size(); ++c) {
+            if (support_sum > 0) weights[c] += float((emission_sum > 0 ? 0.1 : 1.0) * support[c] / support_sum);
+            if (emission_sum > 0) weights[c] += float(0.9 * emission[c] / emission_sum);
+        }
+        emission_cells_ = DiscreteDistribution(weights);
+    });
+    return emission_cells_;
+}
+
+std::optional<EmissionPoint> HeterogeneousMedium::sample_emission_point(float u_cell, Vec3f u_within) const {
+    const DiscreteDistribution &cells = emission_cells();
+    if (cells.empty()) return std::nullopt;
+    float pmf;
+    const int c = cells.sample(u_cell, &pmf);
+    if (!(pmf > 0)) return std::nullopt;
+    const int nx = majorants_.nx(), ny = majorants_.ny(), nz = majorants_.nz();
+    const Vec3f u{(c % nx + u_within.x) / nx, (c / nx % ny + u_within.y) / ny, (c / (nx * ny) + u_within.z) / nz};
+    return EmissionPoint{render_from_unit_cube_.apply_point(u), pmf * float(nx * ny * nz) / render_volume_};
+}
+
+float HeterogeneousMedium::emission_point_pdf(Vec3f p) const {
+    const std::optional<Vec3f> u = unit_cube_point(p);
+    const DiscreteDistribution &cells = emission_cells();
+    if (!u || cells.empty()) return 0;
+    const int nx = majorants_.nx(), ny = majorants_.ny(), nz = majorants_.nz();
+    const int x = std::min(int(u->x * nx), nx - 1), y = std::min(int(u->y * ny), ny - 1),
+              z = std::min(int(u->z * nz), nz - 1);
+    return cells.pmf((z * ny + y) * nx + x) * float(nx * ny * nz) / render_volume_;
+}
+
+SampledSpectrum HeterogeneousMedium::emitted_power(const SampledWavelengths &lambda) const {
+    SampledSpectrum sum(0.f);
+    if (!is_emissive()) return sum;
+    for (const SampledSpectrum &e : cell_emission(lambda)) sum += e;
+    const int cells = majorants_.nx() * majorants_.ny() * majorants_.nz();
+    return sum * (render_volume_ / float(cells));
 }
 
 SampledSpectrum HeterogeneousMedium::transmittance(const Ray &ray, float distance,

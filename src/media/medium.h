@@ -19,6 +19,7 @@
 #include "spectral/sampled_wavelengths.h"
 
 #include <memory>
+#include <optional>
 
 namespace caustica {
 
@@ -46,6 +47,13 @@ struct MediumEvent {
     SampledSpectrum emitted{0.f};
 };
 
+// A point where a light path starts in an emissive medium, with its density per unit of
+// render-space volume.
+struct EmissionPoint {
+    Vec3f p;
+    float pdf = 0;
+};
+
 // The coefficients at one point of a medium.
 struct MediumProperties {
     SampledSpectrum sigma_a{0.f}, sigma_s{0.f};
@@ -63,6 +71,24 @@ class Medium {
     virtual bool is_emissive() const { return false; }
     virtual SampledSpectrum Le(Vec3f p, const SampledWavelengths &lambda) const {
         (void)p;
+        (void)lambda;
+        return SampledSpectrum(0.f);
+    }
+    // Emissive media with bounds (the heterogeneous ones): where light paths start. A point is
+    // drawn with u_cell and u_within (uniform numbers), emission_point_pdf is its density, and
+    // emitted_power the integral of sigma_a Le over the medium. Media without bounds
+    // (homogeneous) have none of these: lights/medium_emitter.h samples the scene's box instead.
+    virtual bool has_emission_sampling() const { return false; }
+    virtual std::optional<EmissionPoint> sample_emission_point(float u_cell, Vec3f u_within) const {
+        (void)u_cell;
+        (void)u_within;
+        return std::nullopt;
+    }
+    virtual float emission_point_pdf(Vec3f p) const {
+        (void)p;
+        return 0;
+    }
+    virtual SampledSpectrum emitted_power(const SampledWavelengths &lambda) const {
         (void)lambda;
         return SampledSpectrum(0.f);
     }

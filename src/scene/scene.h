@@ -67,6 +67,11 @@ class Scene {
     std::vector<LightPtr> lights;
     std::vector<const Light *> infinite_lights;
     std::unique_ptr<LightSampler> light_sampler;
+    // Emissive media as the starts of light paths (lights/medium_emitter.h), and the choice by
+    // power among them and the lights, for the integrators that start paths there (lt, sppm);
+    // null without emissive media.
+    std::vector<LightPtr> medium_emitters;
+    std::unique_ptr<LightSampler> light_and_medium_sampler;
     // The medium around the camera (the outside medium in effect at the Camera directive).
     const Medium *camera_medium = nullptr;
 
@@ -75,7 +80,6 @@ class Scene {
     ParameterDictionary integrator_params;
     SourceLocation integrator_location;
     SourceLocation camera_location; // of the Camera directive (empty for pbrt-v4's default camera)
-    SourceLocation emissive_medium_location; // of the first emissive medium's MakeNamedMedium
     std::string output_filename;         // Film "filename"
     SceneFeatures features;
     RenderOverrides overrides;

@@ -6,6 +6,7 @@
 #include "film/filter.h"
 #include "lights/light.h"
 #include "lights/light_factory.h"
+#include "lights/medium_emitter.h"
 #include "materials/material_factory.h"
 #include "media/medium.h"
 #include "media/medium_factory.h"
@@ -166,10 +167,7 @@ MediumTable create_media(const SceneDescription &d, Scene &scene) {
     for (const MediumEntity &m : d.media) {
         scene.media.push_back(create_medium(m.type, m.params, m.loc, m.render_from_object));
         table[m.name] = scene.media.back().get();
-        if (scene.media.back()->is_emissive() && !scene.features.emissive_media) {
-            scene.features.emissive_media = true;
-            scene.emissive_medium_location = m.loc;
-        }
+        scene.features.emissive_media |= scene.media.back()->is_emissive();
     }
     scene.medium_count = d.media.size();
     return table;
@@ -288,6 +286,19 @@ void add_lights(const SceneDescription &d, const MediumTable &media, Scene &scen
         if (light->type() == LightType::Infinite) scene.infinite_lights.push_back(light.get());
 }
 
+// Every emissive medium becomes a start of light paths, chosen with the lights by power.
+void add_medium_emitters(const Bounds3f &bounds, Scene &scene) {
+    for (const MediumPtr &m : scene.media)
+        if (m->is_emissive()) {
+            scene.medium_emitters.push_back(std::make_shared<MediumEmitter>(*m));
+            scene.medium_emitters.back()->preprocess(bounds);
+        }
+    if (scene.medium_emitters.empty()) return;
+    std::vector<LightPtr> all = scene.lights;
+    all.insert(all.end(), scene.medium_emitters.begin(), scene.medium_emitters.end());
+    scene.light_and_medium_sampler = std::make_unique<PowerLightSampler>(all);
+}
+
 // The colour all the scene's light is emitted in when the scene is achromatic (see
 // SceneFeatures::achromatic), else null. Lights that emit nothing have no colour to agree on,
 // and with no light at all there is no colour either (the film could not be given one).
@@ -349,7 +360,7 @@ IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool came
     // only merging renders, so vcm's connections would be cost without benefit.
     constexpr float SpecularDominated = 0.5f;
     if (features.probe.view_specular >= SpecularDominated &&
-        features.probe.lights_behind_specular >= SpecularDominated && !features.emissive_media)
+        features.probe.lights_behind_specular >= SpecularDominated)
         return {"sppm", "most of the image (" + percent(features.probe.view_specular) +
                             ") shows purely specular surfaces and most emitted light (" +
                             percent(features.probe.lights_behind_specular) +
@@ -404,6 +415,7 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     Bounds3f bounds = scene->geometry.bounds();
     for (const LightPtr &light : scene->lights) light->preprocess(bounds);
     scene->light_sampler = std::make_unique<SpatialLightSampler>(scene->lights);
+    add_medium_emitters(bounds, *scene);
     analyse_features(d, *scene);
     const Spectrum *colour = achromatic_colour(*scene);
     scene->features.achromatic = colour != nullptr;
