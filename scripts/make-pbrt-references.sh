@@ -46,7 +46,9 @@ media/smoke-uniformgrid 8192
 media/smoke-rgbgrid 8192
 media/ground-fog 8192
 media/cloud 8192
-media/emissive 8192"
+media/emissive 8192
+media/plume-spot 8192
+media/fog-caustic-grid 16384"
 
 want=("$@")
 while read -r scene spp; do
