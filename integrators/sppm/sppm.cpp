@@ -7,6 +7,7 @@
 #include "integrators/common/light_sampling.h"
 #include "integrators/common/merge_radius.h"
 #include "integrators/common/light_path_start.h"
+#include "integrators/common/medium_photon.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/photon_search_parameter.h"
 #include "integrators/common/photon_side.h"
@@ -286,7 +287,8 @@ void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, 
         while (true) {
             const bool photon = point.in_medium() ? delta_caustic : is_non_specular(point.bsdf.flags());
             if (depth > 0 && !walk.after_jump() && photon) {
-                const SampledSpectrum beta = start->flux * walk.beta;
+                SampledSpectrum beta = start->flux * walk.beta;
+                if (point.in_medium()) beta = over_sigma_s(beta, *point.medium, point.p, lambda);
                 const StoredPhoton photon{{beta[0], beta[1], beta[2], beta[3]},
                                           encode_octahedral(point.wo),
                                           point.in_medium() ? uint16_t(0) : encode_octahedral_coarse(point.ng),
@@ -401,17 +403,16 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 };
                 if (vp.in_medium()) {
                     // The volumetric photon map's estimate (Jensen and Christensen 1998): the
-                    // phase function times each photon's flux, over sigma_s at the point, which
-                    // both the camera path's and the photon's throughputs hold (vcm.cpp's
-                    // merge_in_medium derives it); the final division is by the sphere's volume.
+                    // phase function times each photon's flux, which was divided by sigma_s at
+                    // its own point when stored, as both the camera path's and the photon's
+                    // throughputs hold sigma_s (vcm.cpp's merge_in_medium derives it); the final
+                    // division is by the sphere's volume.
                     const HenyeyGreenstein &phase = vp.medium->phase();
                     medium_maps[g].for_each_within(vp.p, radius, [&](const StoredPhoton &photon) {
                         if (photon.depth + 1 + vp.depth > max_depth_) return;
                         ++count;
                         add(SampledSpectrum(phase.p(vp.wo, decode_octahedral(photon.wi))) * photon.beta(), photon);
                     });
-                    const SampledSpectrum sigma_s = vp.medium->properties(vp.p, vp.lambda).sigma_s;
-                    for (int i = 0; i < NumWavelengths; ++i) phi[i] = sigma_s[i] > 0 ? phi[i] / sigma_s[i] : 0.f;
                 } else {
                     surface_maps[g].for_each_within(vp.p, radius, [&](const StoredPhoton &photon) {
                         // "maxdepth" bounds the scattering vertices of the whole path, as for the

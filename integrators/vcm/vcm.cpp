@@ -6,6 +6,7 @@
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/merge_radius.h"
 #include "integrators/common/light_path_start.h"
+#include "integrators/common/medium_photon.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/photon_search_parameter.h"
 #include "integrators/common/profile_subsurface.h"
@@ -96,12 +97,16 @@ struct StoredPath {
 using VcmPhotonMap = PhotonMap<Photon>;
 
 // Adds the photons of one light path's vertices to its group's maps (none at the exit of a
-// jump, vcm_mis.h).
-void add_photons(std::span<const LightVertex> path, VcmPhotonMap &surface_photons, VcmPhotonMap &medium_photons) {
+// jump, vcm_mis.h). A photon in a medium keeps its throughput over sigma_s at its own point
+// (merge_in_medium says why).
+void add_photons(std::span<const LightVertex> path, const SampledWavelengths &lambda, VcmPhotonMap &surface_photons,
+                 VcmPhotonMap &medium_photons) {
     for (const LightVertex &v : path) {
         if (v.after_jump) continue;
         const ScatteringPoint &point = v.point;
-        const Photon photon{{v.beta[0], v.beta[1], v.beta[2], v.beta[3]},
+        SampledSpectrum beta = v.beta;
+        if (point.in_medium()) beta = over_sigma_s(beta, *point.medium, point.p, lambda);
+        const Photon photon{{beta[0], beta[1], beta[2], beta[3]},
                             v.d_vcm,
                             v.d_vm,
                             encode_octahedral(point.wo),
@@ -398,8 +403,11 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
 // for each of the N_group light paths: summing over the photons found and dividing by V N_group
 // turns p_light(y_0 .. y) into p_light(y_0 .. y_prev) and leaves an unbiased estimate of the
 // connection-free integral as r -> 0. The product beta_light beta_camera p holds sigma_s twice
-// while f has it once, so one sigma_s(z) is divided out (at a wavelength where sigma_s is zero,
-// beta_camera is already zero there, and so is the estimate). No cosine appears: the kernel is
+// while f has it once, so one is divided out: the photon's own, sigma_s(y), when it is stored
+// (add_photons). The estimate is then sigma_s(z) F_camera times a kernel average of the light
+// side's F / p, which is smooth across the sphere. Dividing by sigma_s(z) instead (the same as
+// r -> 0) weighs each photon by sigma_s(y) / sigma_s(z): in a heterogeneous medium, photons from
+// denser fog around a thin spot then come back as fireflies. No cosine appears: the kernel is
 // a sphere, not a disk, and the vertex has no surface. MIS: the merge at a medium vertex has
 // eta = V N_group times the density of the connection ending there (vcm_mis.h), with d_vm
 // rescaled from its surface reference by d_vm_scale.
@@ -420,11 +428,7 @@ SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
     });
-    const SampledSpectrum sigma_s = point.medium->properties(point.p, ctx.lambda).sigma_s;
-    SampledSpectrum inverse_sigma_s(0.f);
-    for (int i = 0; i < NumWavelengths; ++i)
-        if (sigma_s[i] > 0) inverse_sigma_s[i] = 1 / sigma_s[i];
-    return sum * inverse_sigma_s * ctx.it.volume_normalization[ctx.group];
+    return sum * ctx.it.volume_normalization[ctx.group];
 }
 
 // Every strategy that completes the camera subpath at its non-specular vertex z, weighted:
@@ -607,7 +611,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                              store);
             if (keep_light_vertices)
                 light_paths[index] = StoredPath{&store, uint32_t(begin), uint32_t(store.size() - begin)};
-            add_photons(std::span(store).subspan(begin), surface_photons[g], medium_photons[g]);
+            add_photons(std::span(store).subspan(begin), groups.wavelengths(g), surface_photons[g], medium_photons[g]);
             ++traced;
         });
         light_paths_traced_ = traced;

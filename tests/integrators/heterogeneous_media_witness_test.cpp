@@ -12,9 +12,11 @@
 //   "rgbgrid" glow with per-voxel "rgb Le", beside a dim lamp, lighting a floor and a wall, in all
 //   six integrators (lt and sppm start light paths in the media);
 // - plume-spot: a uniformgrid smoke plume with swirling filaments under a spot light, in pt, lt,
-//   bdpt, sppm and vcm. bpm is left out: at 1024 iterations its merging bias in the dense plume
-//   was -1.0% on the image and -2% on one block (|z| 6.2); it shrinks with the radius, but too
-//   slowly for the suite's time.
+//   bdpt, sppm and vcm. bpm is left out: at 1024 iterations its image mean moves by several
+//   percent between seeds (-1.0%, +3.3%, +4.7%, -0.2% against pbrt-v4), and one block of the
+//   suite's run was off by |z| 6.2. Its only strategy for the spot light's single scattering in
+//   the smoke is merging, and the error of one wavelength group's photons is shared by all its
+//   pixels (issue 19's spiky-spectra finding has the same cause).
 // - fog-caustic-grid: the volumetric caustic of scenes/hard/fog-caustic.pbrt (a small disk light
 //   focused by a glass ball) in a uniformgrid fog that thickens towards the floor, with the
 //   camera inside it: pt, bdpt, sppm and bpm at the hard suite's sample counts for fog-caustic
