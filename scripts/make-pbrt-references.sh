@@ -40,6 +40,9 @@ textures/noise-textures 256
 textures/bump-and-normal-map 256
 cameras/spherical-equirect 64
 cameras/spherical-equalarea 64
+cameras/realistic-dof 4096
+cameras/realistic-gaussian 4096
+cameras/realistic-crescent 4096
 lights/goniometric 1024
 lights/projection 1024
 media/smoke-uniformgrid 8192

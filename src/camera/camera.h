@@ -39,6 +39,7 @@ struct FilmExtent {
     Vec2i full_resolution;
     Vec2f sample_min, sample_max;
     Vec2f filter_radius{0.5f, 0.5f};
+    float diagonal = 0.035f;  // the film's physical diagonal in metres (the realistic camera's)
 
     // The whole image, splats reaching pixels through a filter of this radius.
     static FilmExtent whole_image(Vec2i resolution, Vec2f filter_radius = {0.5f, 0.5f}) {
@@ -66,6 +67,21 @@ class Camera {
     // zero and sample_wi empty, so integrators that connect light paths to the lens must refuse
     // such a camera rather than silently lose those paths.
     virtual bool models_importance() const { return true; }
+};
+
+// A camera whose importance is not modelled (pbrt-v4 leaves it unimplemented for the same
+// cameras): We and pdf_we are zero and sample_wi empty, and integrators that connect light
+// paths to the lens refuse it.
+class CameraWithoutImportance : public Camera {
+  public:
+    SampledSpectrum We(const Ray &, const SampledWavelengths &, Vec2f * = nullptr) const override {
+        return SampledSpectrum(0.f);
+    }
+    void pdf_we(const Ray &, float *pdf_pos, float *pdf_dir) const override { *pdf_pos = *pdf_dir = 0; }
+    std::optional<CameraWiSample> sample_wi(Vec3f, Vec2f, const SampledWavelengths &) const override {
+        return std::nullopt;
+    }
+    bool models_importance() const override { return false; }
 };
 
 using CameraPtr = std::shared_ptr<const Camera>;

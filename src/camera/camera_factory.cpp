@@ -2,7 +2,11 @@
 
 #include "camera/orthographic_camera.h"
 #include "camera/perspective_camera.h"
+#include "camera/realistic_camera.h"
 #include "camera/spherical_camera.h"
+#include "params/float_file.h"
+
+#include <cmath>
 
 namespace caustica {
 
@@ -53,6 +57,59 @@ CameraPtr create_perspective(const Transform &world_from_camera, const FilmExten
                                                p.lens_radius, p.focal_distance);
 }
 
+// pbrt-v4's "realistic" camera: "lensfile" (required), "aperturediameter" (mm, default 1),
+// "focusdistance" (m from the film, default 10), "aperture" (a built-in shape or an image file).
+CameraPtr create_realistic(const Transform &world_from_camera, const FilmExtent &film,
+                           const ParameterDictionary &params, const SourceLocation &loc) {
+    params.get_one_float("shutteropen", 0);
+    params.get_one_float("shutterclose", 1);
+    const std::string lens_file = params.get_one_string("lensfile", "");
+    if (lens_file.empty()) throw InputError(loc, "the \"realistic\" camera needs a lens description (\"lensfile\")");
+    const float aperture_diameter = params.get_one_float("aperturediameter", 1);
+    if (!(aperture_diameter > 0) || !std::isfinite(aperture_diameter))
+        throw InputError(params.location("aperturediameter"), "\"aperturediameter\" must be positive");
+    const float focus_distance = params.get_one_float("focusdistance", 10);
+    if (!(focus_distance > 0) || !std::isfinite(focus_distance))
+        throw InputError(params.location("focusdistance"), "\"focusdistance\" must be positive");
+
+    LensSystem lens;
+    bool clamped = false;
+    try {
+        lens = LensSystem::from_description(read_float_file(params.file_path("lensfile", lens_file), "lens file"),
+                                            aperture_diameter, &clamped);
+    } catch (const InputError &e) {
+        throw InputError(params.location("lensfile"), e.message());
+    }
+    if (clamped)
+        warning(params.location("aperturediameter"),
+                "\"aperturediameter\" is larger than the lens's aperture stop; the stop's own diameter is used");
+    try {
+        lens.focus(focus_distance, film.diagonal);
+    } catch (const InputError &e) {
+        throw InputError(params.location("focusdistance"), e.message());
+    }
+
+    std::optional<ApertureMask> mask;
+    const std::string aperture = params.get_one_string("aperture", "");
+    if (!aperture.empty()) {
+        mask = ApertureMask::builtin(aperture);
+        if (!mask) {
+            const std::string path = params.file_path("aperture", aperture);
+            try {
+                mask = ApertureMask::from_image(path);
+            } catch (const std::runtime_error &e) {
+                throw InputError(params.location("aperture"),
+                                 "\"aperture\" is neither gaussian, square, pentagon nor star, and as an image: " +
+                                     std::string(e.what()));
+            }
+        }
+    }
+    auto camera = std::make_shared<RealisticCamera>(world_from_camera, film, std::move(lens), std::move(mask));
+    if (!camera->transmits())
+        warning(loc, "no ray from the film passes the lens system: the image will be black");
+    return camera;
+}
+
 } // namespace
 
 CameraPtr create_camera(const std::string &type, const Transform &world_from_camera,
@@ -81,17 +138,7 @@ CameraPtr create_camera(const std::string &type, const Transform &world_from_cam
                                                  mapping == "equalarea" ? SphericalCamera::Mapping::EqualArea
                                                                         : SphericalCamera::Mapping::Equirectangular);
     }
-    if (type == "realistic") {
-        warning(loc, "the \"" + type + "\" camera is not supported; rendering with a "
-                     "perspective camera instead");
-        // The replaced camera's own parameters are acknowledged so that only the warning above
-        // reports them, not one warning each.
-        for (const char *name : {"lensfile", "apertureimage"})
-            if (params.has(name)) params.get_one_string(name, "");
-        for (const char *name : {"aperturediameter", "focusdistance"})
-            if (params.has(name)) params.get_one_float(name, 0);
-        return create_perspective(world_from_camera, film, params);
-    }
+    if (type == "realistic") return create_realistic(world_from_camera, film, params, loc);
     throw InputError(loc, "\"" + type + "\": unknown camera type");
 }
 

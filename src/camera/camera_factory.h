@@ -10,9 +10,9 @@
 namespace caustica {
 
 // "perspective" ("fov" in degrees across the shorter image axis, default 90; "lensradius",
-// default 0; "focaldistance", default 1e6; "frameaspectratio"; "screenwindow") and
-// "orthographic" (the same without "fov"). "realistic" and "spherical" are not supported: they
-// warn and fall back to a perspective camera with the directive's perspective parameters.
+// default 0; "focaldistance", default 1e6; "frameaspectratio"; "screenwindow"), "orthographic"
+// (the same without "fov"), "spherical" ("mapping") and "realistic" ("lensfile",
+// "aperturediameter", "focusdistance", "aperture"), with pbrt-v4's parameters and defaults.
 // Unknown types and invalid values are InputErrors. `film` is the film's extent (Film::extent()):
 // importance and splats then cover exactly the pixels the filter reaches, as in pbrt-v4.
 CameraPtr create_camera(const std::string &type, const Transform &world_from_camera,

@@ -12,7 +12,7 @@
 
 namespace caustica {
 
-class SphericalCamera final : public Camera {
+class SphericalCamera final : public CameraWithoutImportance {
   public:
     enum class Mapping { EqualArea, Equirectangular };
     SphericalCamera(const Transform &world_from_camera, const FilmExtent &film, Mapping mapping)
@@ -22,15 +22,7 @@ class SphericalCamera final : public Camera {
                                           const SampledWavelengths &lambda) const override;
     // Camera-space direction of a raster position.
     Vec3f direction(Vec2f p_raster) const;
-    SampledSpectrum We(const Ray &, const SampledWavelengths &, Vec2f * = nullptr) const override {
-        return SampledSpectrum(0.f);
-    }
-    void pdf_we(const Ray &, float *pdf_pos, float *pdf_dir) const override { *pdf_pos = *pdf_dir = 0; }
-    std::optional<CameraWiSample> sample_wi(Vec3f, Vec2f, const SampledWavelengths &) const override {
-        return std::nullopt;
-    }
     Vec3f position() const override { return world_from_camera_.apply_point({0, 0, 0}); }
-    bool models_importance() const override { return false; }
 
   private:
     Transform world_from_camera_;

@@ -3,10 +3,20 @@
 
 #include "core/vecmath.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <span>
 #include <vector>
 
 namespace caustica {
+
+// The base-b radical inverse of index: its digits mirrored about the radix point (the van der
+// Corput sequence in base b; Halton points take one prime base per dimension).
+inline float radical_inverse(uint64_t base, uint64_t index) {
+    double value = 0, scale = 1.0 / double(base);
+    for (; index > 0; index /= base, scale /= double(base)) value += double(index % base) * scale;
+    return std::min(OneMinusEpsilon, float(value));
+}
 
 inline float power_heuristic(int nf, float f_pdf, int ng, float g_pdf) {
     float f = nf * f_pdf, g = ng * g_pdf;

@@ -33,7 +33,8 @@ FilmExtent Film::extent() const {
     return {full_resolution_,
             {pixel_bounds_.min.x - r.x + 0.5f, pixel_bounds_.min.y - r.y + 0.5f},
             {pixel_bounds_.max.x + r.x - 0.5f, pixel_bounds_.max.y + r.y - 0.5f},
-            r};
+            r,
+            diagonal_};
 }
 
 void Film::set_achromatic(const Spectrum &colour, float lambda) {
@@ -286,7 +287,9 @@ std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictio
 
     std::string filename = params.get_one_string("filename", "");
     if (filename.empty()) filename = "pbrt.exr";
-    params.get_one_float("diagonal", 35);  // sensor size of the realistic camera (unsupported)
+    const float diagonal_mm = params.get_one_float("diagonal", 35);  // the realistic camera's film size
+    if (!(diagonal_mm > 0) || !std::isfinite(diagonal_mm))
+        throw InputError(params.location("diagonal"), "\"diagonal\" must be a positive length in millimetres");
 
     float iso = params.get_one_float("iso", 100);
     if (!(iso > 0)) throw InputError(params.location("iso"), "\"iso\" must be positive");
@@ -311,8 +314,10 @@ std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictio
     } catch (const std::domain_error &e) {
         throw InputError(params.location("whitebalance"), e.what());
     }
-    return std::make_unique<Film>(full, bounds, std::move(filter), output, *sensor, max_component,
-                                  filename, fp16);
+    auto film = std::make_unique<Film>(full, bounds, std::move(filter), output, *sensor, max_component,
+                                       filename, fp16);
+    film->set_diagonal(diagonal_mm / 1000);
+    return film;
 }
 
 } // namespace caustica

@@ -66,6 +66,9 @@ class Film {
     const std::string &filename() const { return filename_; }
     // True if the scene asked for half-float EXR output ("savefp16").
     bool save_fp16() const { return save_fp16_; }
+    // The film's physical diagonal in metres ("diagonal", in millimetres in the scene file), which
+    // only the realistic camera uses; 35 mm unless set.
+    void set_diagonal(float metres) { diagonal_ = metres; }
 
     // Monochromatic rendering (`--wavelength`): a sample's value is the grey level
     // (1/n) sum_j L_j / pdf_j (times the imaging ratio) in every channel, with no colour
@@ -134,6 +137,7 @@ class Film {
     float max_component_value_;
     std::string filename_;
     bool save_fp16_;
+    float diagonal_ = 0.035f;
     bool monochromatic_ = false;
     std::optional<RGB> achromatic_rgb_; // per unit of a sample's average, when achromatic
 

@@ -1,5 +1,6 @@
 #include "sampler/halton_sampler.h"
 
+#include "core/sampling.h"
 #include "sampler/sample_hash.h"
 
 #include <algorithm>
@@ -63,12 +64,6 @@ int digit_positions(uint64_t base) {
 }
 
 uint64_t dimension_seed(uint64_t seed, int dimension) { return mix_bits(seed ^ (uint64_t(dimension) << 32)); }
-
-float radical_inverse(uint64_t base, uint64_t index) {
-    double value = 0, scale = 1.0 / double(base);
-    for (; index > 0; index /= base, scale /= double(base)) value += double(index % base) * scale;
-    return std::min(OneMinusEpsilon, float(value));
-}
 
 } // namespace
 

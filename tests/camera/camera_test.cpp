@@ -316,9 +316,7 @@ TEST(CameraFactory, ReadsPbrtParameters) {
     cam = create_camera("perspective", id, Vec2i{100, 50},
                         dict({float_param("screenwindow", {-1, 1, -1, 1})}), loc);
     EXPECT_NEAR(angle_between(ray_through(*cam, {0, 25}).ray.d, {0, 0, 1}), radians(45), 1e-5f);
-    // Unsupported cameras fall back to perspective.
-    EXPECT_NE(create_camera("realistic", id, Vec2i{10, 10}, dict({}), loc), nullptr);
-    EXPECT_NE(create_camera("spherical", id, Vec2i{10, 10}, dict({}), loc), nullptr);
+    EXPECT_FALSE(create_camera("spherical", id, Vec2i{10, 10}, dict({}), loc)->models_importance());
     EXPECT_FALSE(create_camera("orthographic", id, Vec2i{10, 10}, dict({}), loc)->models_importance());
     set_warnings_enabled(true);
     EXPECT_FLOAT_EQ(camera_exposure_time(dict({float_param("shutterclose", {0.25})}), loc), 0.25f);
