@@ -224,6 +224,14 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
         }
         ++path_length;
         m.arrive(path_length > 1 || !at_infinity ? walk.distance_squared() : 1.f, point.cosine(point.wo));
+        if (path_length == 1 && light.type() == LightType::Infinite) {
+            // light_start took next-event estimation's density of this direction to be the
+            // emission's directional density, which it is for environment maps but not through a
+            // portal, where it depends on the receiving point (only directions through the
+            // portal from it are sampled): the first vertex is that point.
+            const float direct_pdf = light.pdf_li(LightSampleContext{point.p, point.ng, point.ns}, -les.ray.d);
+            m.d_vcm *= mis(direct_pdf / les.pdf_dir);
+        }
         // The vertex, then the exit of a profile solid that its sampled direction enters.
         while (true) {
             if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
@@ -316,7 +324,7 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
     float assumed_direct_pdf = chosen->pmf;
     if (light.type() == LightType::Area) assumed_direct_pdf *= e.pdf_pos * dist2 / cos_at_light;
     else if (light.type() == LightType::DeltaPosition) assumed_direct_pdf *= dist2;
-    else if (light.type() == LightType::Infinite) assumed_direct_pdf *= e.pdf_dir;
+    else if (light.type() == LightType::Infinite) assumed_direct_pdf *= ls->pdf;
     const float emission_pdf = chosen->pmf * e.pdf_pos * e.pdf_dir;
     const float w_light = is_delta_light(light.type()) ? 0.f : mis(scattering.pdf_forward / assumed_direct_pdf);
     const float pdf_reverse = z.after_jump ? 1.f : scattering.pdf_reverse;

@@ -6,6 +6,7 @@
 #include "lights/image_infinite_light.h"
 #include "spectral/photometric.h"
 #include "lights/point_light.h"
+#include "lights/portal_infinite_light.h"
 #include "lights/projection_light.h"
 #include "lights/rgb_image.h"
 #include "lights/spot_light.h"
@@ -181,24 +182,33 @@ LightPtr create_infinite(const Transform &render_from_light, const ParameterDict
     float scale = read_scale(params);
     std::string filename = params.get_one_string("filename", "");
     float illuminance = params.get_one_float("illuminance", -1);
-    if (!params.get_point3_array("portal").empty())
-        warning(params.location("portal"),
-                "infinite light portals are not supported; the "
-                "\"portal\" is ignored (same image, more noise)");
+    const std::vector<Vec3f> portal = params.get_point3_array("portal");
+    if (!portal.empty() && portal.size() != 4)
+        throw InputError(params.location("portal"), "\"portal\" needs the 4 corners of a rectangle, got " +
+                                                        std::to_string(portal.size()) + " points");
     const RGBColorSpace &cs = params.color_space();
 
-    if (filename.empty()) {
+    if (filename.empty() && portal.empty()) {
         if (!L) L = std::make_shared<DenselySampledSpectrum>(cs.illuminant());
         scale = photometric_scale(scale, *L);
         // A uniform sky of luminance 1 sheds illuminance pi on a surface.
         if (illuminance > 0) scale *= illuminance / Pi;
         return std::make_shared<UniformInfiniteLight>(tabulated(L), scale);
     }
-    if (L)
+    if (L && !filename.empty())
         throw InputError(params.location("L"),
                          "an infinite light takes either \"L\" or \"filename\", not both");
 
-    RGBImage image = read_light_image(params, filename);
+    RGBImage image;
+    if (!filename.empty()) {
+        image = read_light_image(params, filename);
+    } else {
+        // A portal with a uniform sky: pbrt-v4 turns "L" (or the colour space's illuminant)
+        // into a one-texel sRGB image.
+        const RGB rgb = L ? RGBColorSpace::srgb().rgb_from_xyz(spectrum_to_xyz(*L)) : RGB{1, 1, 1};
+        image.width = image.height = 1;
+        image.pixels = {rgb.r, rgb.g, rgb.b};
+    }
     EnvironmentMapping mapping = environment_mapping(image, params, filename);
     // Image values are RGB in sRGB (pbrt-v4 reads the file's colour space; files without one,
     // nearly all, are sRGB).
@@ -208,6 +218,18 @@ LightPtr create_infinite(const Transform &render_from_light, const ParameterDict
         float k_e = ImageInfiniteLight::pbrt_illuminance_normalization(image, mapping,
                                                                        luminance_weights(image_cs));
         if (k_e > 0) scale *= illuminance / k_e;
+    }
+    if (!portal.empty()) {
+        if (mapping != EnvironmentMapping::EqualArea)
+            throw InputError(params.location("filename"), "\"" + filename +
+                                                              "\": a portal needs a square (equal-area) environment map");
+        // The corners are world-space points, not transformed by the light's own transform.
+        try {
+            return std::make_shared<PortalInfiniteLight>(render_from_light, image, image_cs, scale,
+                                                         std::array<Vec3f, 4>{portal[0], portal[1], portal[2], portal[3]});
+        } catch (const std::invalid_argument &e) {
+            throw InputError(params.location("portal"), e.what());
+        }
     }
     return std::make_shared<ImageInfiniteLight>(render_from_light, std::move(image), mapping,
                                                 image_cs, scale);
