@@ -353,8 +353,8 @@ IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool came
         return {"pt", "no specular surface can focus light onto a diffuse one, so camera paths with "
                       "light sampling find every path; path tracing is the cheapest per sample"};
     if (!camera_models_importance)
-        return {"pt", "the scene has caustic paths, but its camera (orthographic) cannot receive "
-                      "light paths"};
+        return {"sppm", "the scene has caustic paths, and its camera (orthographic, spherical or realistic) "
+                        "cannot receive light paths: sppm renders caustics from camera rays and photons"};
     // Both ends of most paths behind specular surfaces (a pool seen and lit through its water):
     // the paths that matter are specular-diffuse-specular, which connections cannot sample and
     // only merging renders, so vcm's connections would be cost without benefit.

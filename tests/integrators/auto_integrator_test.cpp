@@ -85,3 +85,22 @@ TEST(AutoIntegrator, ChoosesSppmWhenCameraAndLightsLookThroughSpecularSurfaces) 
     EXPECT_GE(scene->features.probe.lights_behind_specular, 0.5f);
     EXPECT_EQ(scene->integrator_name, "sppm");
 }
+
+// A camera that cannot receive light paths rules out lt, bdpt, bpm and vcm: with caustic paths
+// auto takes sppm, which needs camera rays only; without them, the path tracer.
+TEST(AutoIntegrator, ChoosesSppmForCausticsSeenByACameraWithoutImportance) {
+    const std::string lens = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cameras/lenses/triplet-60mm.dat";
+    const std::string text = caustica::testing::read_text(caustica::testing::data_path("reference/glass-sphere.pbrt"));
+    const std::string perspective = "Camera \"perspective\" \"float fov\" [ 40 ]";
+    ASSERT_NE(text.find(perspective), std::string::npos);
+    for (const std::string camera :
+         {std::string("Camera \"spherical\" \"string mapping\" \"equirectangular\""),
+          "Camera \"realistic\" \"string lensfile\" \"" + lens + "\" \"float focusdistance\" 5"}) {
+        std::string with_camera = text;
+        with_camera.replace(with_camera.find(perspective), perspective.size(), camera);
+        auto scene = build(with_camera);
+        EXPECT_TRUE(scene->features.caustic_paths);
+        EXPECT_FALSE(scene->camera->models_importance());
+        EXPECT_EQ(scene->integrator_name, "sppm") << camera;
+    }
+}
