@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Renders the pbrt-v4 references of the scenes that tests compare with pbrt-v4: the
 # hard-transport scenes (scenes/hard; see tests/data/pbrt-v4/hard/README.md), the procedural
-# textures (scenes/textures), cameras, lights and heterogeneous media (scenes/cameras,
-# scenes/lights, scenes/media), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
+# textures (scenes/textures), cameras, lights, heterogeneous media and motion blur (scenes/cameras,
+# scenes/lights, scenes/media, scenes/motion), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
 # not needed by any test: it needs a pbrt-v4 binary (PBRT, default ../shared/tools/pbrt-v4/pbrt)
 # and oiiotool, and takes about half an hour on 2 cores.
 #
@@ -52,7 +52,8 @@ media/ground-fog 8192
 media/cloud 8192
 media/emissive 8192
 media/plume-spot 8192
-media/fog-caustic-grid 16384"
+media/fog-caustic-grid 16384
+motion/moving-sphere 4096"
 
 want=("$@")
 while read -r scene spp; do

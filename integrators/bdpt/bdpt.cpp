@@ -37,6 +37,7 @@ struct SubpathContext {
     const Scene &scene;
     SampledWavelengths &lambda;
     PixelSampleContext &sample;
+    float time; // of the camera ray, which the light subpath shares
 };
 
 // Extends the subpath whose last vertex is path[count - 1] by following ray, whose direction
@@ -151,7 +152,7 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
 // The light subpath: a light chosen by power, an emitted ray, then scattering vertices.
 int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     const Scene &scene = ctx.scene;
-    const std::optional<LightPathStart> start = start_light_path(scene, ctx.sample.sampler, ctx.lambda);
+    const std::optional<LightPathStart> start = start_light_path(scene, ctx.sample.sampler, ctx.lambda, ctx.time);
     if (!start || max_count == 0) return 0;
     const Light &light = *start->light;
     const LightLeSample *les = &start->les;
@@ -187,10 +188,9 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
 
 // The fraction of light that travels between two vertices: zero when a surface is in the way,
 // else the transmittance of the media along the segment.
-SampledSpectrum connection_transmittance(const Scene &scene, const PathVertex &a, const PathVertex &b,
-                                         const SampledWavelengths &lambda, uint64_t &rays) {
-    return transmittance(scene, spawn_ray_to(a.p(), a.ng(), b.p(), b.ng()), a.medium_towards(b.p() - a.p()),
-                         lambda, rays);
+SampledSpectrum connection_transmittance(const SubpathContext &ctx, const PathVertex &a, const PathVertex &b) {
+    return transmittance(ctx.scene, spawn_ray_to(a.p(), a.ng(), b.p(), b.ng(), ctx.time),
+                         a.medium_towards(b.p() - a.p()), ctx.lambda, ctx.sample.rays);
 }
 
 struct Connection {
@@ -239,7 +239,7 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         }
         L *= sampled.beta;
         if (L.is_black()) return c;
-        L *= connection_transmittance(scene, sampled, qs, ctx.lambda, rays);
+        L *= connection_transmittance(ctx, sampled, qs);
         c.splat = true;
         c.p_raster = cs->p_raster;
     } else if (s == 1) {
@@ -265,7 +265,8 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
             sampled.beta;
         if (L.is_black()) return c;
         // A medium vertex has no normal, so its rays start at the point itself.
-        Ray shadow = ls->is_infinite ? pt.si.spawn_ray(ls->wi) : pt.si.spawn_ray_to(ls->p_light, ls->n_light);
+        Ray shadow = ls->is_infinite ? spawn_ray(pt.p(), pt.ng(), ls->wi, ctx.time)
+                                     : spawn_ray_to(pt.p(), pt.ng(), ls->p_light, ls->n_light, ctx.time);
         L *= transmittance(scene, shadow, pt.medium_towards(ls->wi), ctx.lambda, rays);
     } else {
         // Join two scattering vertices with a shadow ray: both scattering functions and the
@@ -280,7 +281,7 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         L = qs.beta * qs.f(d, TransportMode::Importance) * qs.cosine(d, TransportMode::Importance) *
             pt.f(-d, TransportMode::Radiance) * (pt.cosine(-d, TransportMode::Radiance) / dist2) * pt.beta;
         if (L.is_black()) return c;
-        L *= connection_transmittance(scene, qs, pt, ctx.lambda, rays);
+        L *= connection_transmittance(ctx, qs, pt);
     }
     if (L.is_black()) return c;
     c.L = L * bdpt_mis_weight(scene, light_vertices, camera_vertices, sampled, s, t);
@@ -311,11 +312,11 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     for_each_pixel_sample(scene, budget, stats, progress, [&](Vec2i pixel, int, PixelSampleContext &sample) {
         Sampler &sampler = sample.sampler;
         SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
-        CameraSample cs = get_camera_sample(sampler, pixel, film.filter());
+        CameraSample cs = get_camera_sample(sampler, pixel, film.filter(), scene.motion_shutter());
         SampledSpectrum L(0.f);
         auto camera_ray = scene.camera->generate_ray(cs, lambda);
         if (camera_ray) {
-            SubpathContext ctx{scene, lambda, sample};
+            SubpathContext ctx{scene, lambda, sample, camera_ray->ray.time};
             // A path of depth d (bounces) has d + 2 vertices: the camera subpath may need all of
             // them (s = 0), the light subpath all but the lens point (t = 1); each subsurface
             // jump adds one that is not a bounce (PathVertex::after_jump), at most one per bounce.

@@ -56,6 +56,15 @@ IterationRenderer::IterationRenderer(const Scene &scene, const RenderBudget &bud
 
 IterationRenderer::~IterationRenderer() { flush_counters(); }
 
+float IterationRenderer::time(int iteration) const {
+    const Shutter *shutter = scene_.motion_shutter();
+    if (!shutter) return 0;
+    constexpr int kCameraTimeDimension = 5; // sampler.h
+    std::unique_ptr<Sampler> sampler = scene_.sampler->clone();
+    sampler->start_pixel_sample(Vec2i{0, 0}, iteration, kCameraTimeDimension);
+    return shutter->time(sampler->get_1d());
+}
+
 void IterationRenderer::flush_counters() {
     for (ThreadState &ts : threads_->states) {
         stats_.rays += std::exchange(ts.rays, 0);

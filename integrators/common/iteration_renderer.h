@@ -59,6 +59,12 @@ class IterationRenderer {
 
     size_t pixel_count() const { return pixel_count_; }
 
+    // The time within the shutter (geometry/ray.h) of every path of the iteration, camera and
+    // light alike, so that connections and merges join paths of one time: the scene's sampler at
+    // pixel (0, 0), sample index `iteration`, in the camera's time dimension, so that successive
+    // iterations stratify the shutter. 0 when nothing moves.
+    float time(int iteration) const;
+
   private:
     struct ThreadState;
     bool cancelled() const;

@@ -12,9 +12,9 @@ namespace {
 // The medium at point p: the one on p's side of the first surface along a fixed direction that
 // separates two media, or, when no such surface lies that way, the camera's (a medium that
 // surrounds the camera without bounds). Surfaces that are no transition are passed through.
-const Medium *medium_at(const Scene &scene, Vec3f p) {
+const Medium *medium_at(const Scene &scene, Vec3f p, float time) {
     const Vec3f d = normalize(Vec3f{0.267f, 0.535f, 0.802f});
-    Ray ray{p, d, Infinity};
+    Ray ray{p, d, Infinity, time};
     for (int crossed = 0; crossed < 64; ++crossed) {
         SurfaceInteraction si;
         if (!scene.intersect(ray, &si)) return scene.camera_medium;
@@ -28,7 +28,7 @@ const Medium *medium_at(const Scene &scene, Vec3f p) {
 } // namespace
 
 std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda,
-                                               LightPathSources sources) {
+                                               float time, LightPathSources sources) {
     const LightSampler &lights = sources == LightPathSources::LightsAndEmissiveMedia && scene.light_and_medium_sampler
                                      ? *scene.light_and_medium_sampler
                                      : *scene.light_sampler;
@@ -37,7 +37,8 @@ std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &samp
     if (!chosen) return std::nullopt;
     auto les = chosen->light->sample_le(u_position, u_direction, lambda);
     if (!les || les->L.is_black() || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return std::nullopt;
-    if (chosen->light->type() == LightType::Volume && medium_at(scene, les->ray.o) != chosen->light->medium())
+    les->ray.time = time;
+    if (chosen->light->type() == LightType::Volume && medium_at(scene, les->ray.o, time) != chosen->light->medium())
         return std::nullopt;
     LightPathStart start{chosen->light, chosen->pmf, *les};
     if (les->n != Vec3f{}) start.cos_origin = abs_dot(les->n, normalize(les->ray.d));

@@ -35,8 +35,9 @@ enum class LightPathSources { Lights, LightsAndEmissiveMedia };
 // Draws the light (one sampler dimension) and its ray (two 2D dimensions, drawn even when no
 // light can be chosen, so that the dimensions after it do not depend on the outcome). Empty when
 // nothing is emitted, which includes a point drawn in an emissive medium's box that lies outside
-// the medium (beyond the interfaces that bound it).
+// the medium (beyond the interfaces that bound it). The ray leaves at `time` (geometry/ray.h):
+// that of the camera path the light path will be joined with.
 std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda,
-                                               LightPathSources sources = LightPathSources::Lights);
+                                               float time, LightPathSources sources = LightPathSources::Lights);
 
 } // namespace caustica

@@ -60,7 +60,7 @@ SampledSpectrum sample_direct_lighting(const Scene &scene, const SurfaceInteract
     return estimate_direct(scene, ctx, lambda, sampler, rays, strategy, scattering, shadow_ray);
 }
 
-SampledSpectrum sample_direct_lighting_in_medium(const Scene &scene, Vec3f p, Vec3f wo, const Medium &medium,
+SampledSpectrum sample_direct_lighting_in_medium(const Scene &scene, Vec3f p, float time, Vec3f wo, const Medium &medium,
                                                  const SampledWavelengths &lambda, Sampler &sampler,
                                                  uint64_t &rays, DirectLighting strategy) {
     const HenyeyGreenstein &phase = medium.phase();
@@ -69,7 +69,7 @@ SampledSpectrum sample_direct_lighting_in_medium(const Scene &scene, Vec3f p, Ve
         return std::pair{SampledSpectrum(value), value};
     };
     auto shadow_ray = [&](const LightLiSample &ls) {
-        Ray ray = ls.is_infinite ? Ray{p, ls.wi, Infinity} : spawn_ray_to(p, Vec3f{}, ls.p_light, ls.n_light);
+        Ray ray = ls.is_infinite ? Ray{p, ls.wi, Infinity, time} : spawn_ray_to(p, Vec3f{}, ls.p_light, ls.n_light, time);
         return std::pair{ray, &medium};
     };
     return estimate_direct(scene, LightSampleContext{p, {}, {}}, lambda, sampler, rays, strategy, scattering,

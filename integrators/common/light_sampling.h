@@ -33,8 +33,8 @@ SampledSpectrum sample_direct_lighting(const Scene &scene, const SurfaceInteract
                                        const Medium *medium = nullptr);
 
 // The same at a scattering point p inside `medium`, with its phase function in place of the
-// BSDF (and no cosine); wo points back along the path.
-SampledSpectrum sample_direct_lighting_in_medium(const Scene &scene, Vec3f p, Vec3f wo, const Medium &medium,
+// BSDF (and no cosine); wo points back along the path, whose time is `time`.
+SampledSpectrum sample_direct_lighting_in_medium(const Scene &scene, Vec3f p, float time, Vec3f wo, const Medium &medium,
                                                  const SampledWavelengths &lambda, Sampler &sampler,
                                                  uint64_t &rays,
                                                  DirectLighting strategy = DirectLighting::WeightedAgainstBsdfSampling);

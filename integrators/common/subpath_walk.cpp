@@ -37,7 +37,7 @@ WalkEvent SubpathWalk::advance() {
         ++rays_;
         const bool hit = scene_.intersect(ray_, &si_);
         const float speed = length(ray_.d);
-        const PathSegment segment = traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed},
+        const PathSegment segment = traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed, Infinity, ray_.time},
                                                      hit ? si_.t * speed : Infinity, lambda_, sampler_, free_flight_);
         if (mode_ == TransportMode::Radiance) emitted_ += beta * segment.emitted;
         beta *= segment.weight;
@@ -73,7 +73,7 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
         if (!(ps.p > 0)) return std::nullopt;
         s.wi = ps.wi;
         s.pdf_fwd = s.pdf_rev = ps.p;
-        ray_ = Ray{point_.p, ps.wi, Infinity};
+        ray_ = Ray{point_.p, ps.wi, Infinity, point_.time};
         return s;
     }
     const BSDF &bsdf = point_.bsdf;

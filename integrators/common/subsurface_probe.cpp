@@ -118,7 +118,7 @@ std::optional<SubsurfaceExit> SubsurfaceProbeSampler::sample(const SurfaceIntera
     Vec3f start = entry.p + (b1 * std::cos(phi) + b2 * std::sin(phi)) * r - a * half_length;
 
     hits_.clear();
-    gather(Ray{start, a, 2 * half_length}, hits_);
+    gather(Ray{start, a, 2 * half_length, entry.time}, hits_);
     std::erase_if(hits_,
                   [&](const SurfaceInteraction &hit) { return hit.material != entry.material; });
     if (hits_.empty()) return {};

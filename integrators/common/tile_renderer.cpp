@@ -153,7 +153,7 @@ void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &s
     for_each_pixel_sample(scene, budget, stats, progress, [&](Vec2i pixel, int, PixelSampleContext &ctx) {
         Sampler &sampler = ctx.sampler;
         SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
-        CameraSample cs = get_camera_sample(sampler, pixel, film.filter());
+        CameraSample cs = get_camera_sample(sampler, pixel, film.filter(), scene.motion_shutter());
         SampledSpectrum L;
         if (auto ray = scene.camera->generate_ray(cs, lambda)) {
             L = radiance(*ray, lambda, sampler, ctx.scratch, ctx.rays) * ray->weight;

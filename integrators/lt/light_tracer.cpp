@@ -68,7 +68,7 @@ void connect_light_vertex(const LightPathContext &ctx, const Light &light, const
     // light is seen from the side opposite to the sampled emission direction, p lies on the
     // wrong side and a ray spawned from it would start on the emitter; spawn_ray_to moves the
     // target to the lens's side and stops short of it, whichever side p is on.
-    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, p, les.n), scene.camera_medium, lambda,
+    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, p, les.n, les.ray.time), scene.camera_medium, lambda,
                        ctx.sample.rays);
     splat(ctx, cs->p_raster, L, lambda);
 }
@@ -83,7 +83,8 @@ void connect_to_lens(const LightPathContext &ctx, const ScatteringPoint &point, 
     if (f.is_black()) return;
     SampledSpectrum L = throughput * f * cs->We / cs->pdf;
     if (L.is_black()) return;
-    L *= transmittance(ctx.scene, spawn_ray_to(point.p, point.ng, cs->p_lens), point.medium_towards(cs->wi), lambda,
+    L *= transmittance(ctx.scene, spawn_ray_to(point.p, point.ng, cs->p_lens, Vec3f{}, point.time),
+                       point.medium_towards(cs->wi), lambda,
                        ctx.sample.rays);
     splat(ctx, cs->p_raster, L, lambda);
 }
@@ -94,8 +95,11 @@ void trace_light_path(const LightPathContext &ctx) {
     Sampler &sampler = ctx.sample.sampler;
 
     SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
+    // The path's time within the shutter, drawn only when geometry moves (as camera paths do).
+    const Shutter *shutter = scene.motion_shutter();
+    const float time = shutter ? shutter->time(sampler.get_1d()) : 0.f;
     const std::optional<LightPathStart> start =
-        start_light_path(scene, sampler, lambda, LightPathSources::LightsAndEmissiveMedia);
+        start_light_path(scene, sampler, lambda, time, LightPathSources::LightsAndEmissiveMedia);
     if (!start) return;
     // A path from an emissive medium starts at an event of the medium (where the path tracer's
     // collision estimator counts the emission), which counts towards max_depth as a scattering

@@ -66,7 +66,7 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, const Ray &camera_
         // the sampled direction enters (one scattering event, as for maxdepth).
         while (true) {
             if (point.in_medium()) {
-                L += walk.beta * sample_direct_lighting_in_medium(scene, point.p, point.wo, *point.medium, lambda,
+                L += walk.beta * sample_direct_lighting_in_medium(scene, point.p, point.time, point.wo, *point.medium, lambda,
                                                                  sampler, rays);
                 mis.prev_ctx = LightSampleContext{point.p, {}, {}};
             } else {

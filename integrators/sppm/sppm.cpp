@@ -211,7 +211,7 @@ void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const 
         const ScatteringPoint &point = walk.vertex();
         if (point.in_medium()) {
             if (depth == max_depth) return;
-            L += walk.beta * sample_direct_lighting_in_medium(scene, point.p, point.wo, *point.medium, lambda, sampler,
+            L += walk.beta * sample_direct_lighting_in_medium(scene, point.p, point.time, point.wo, *point.medium, lambda, sampler,
                                                              ctx.rays, DirectLighting::LightSamplingOnly);
             state.medium_vps.push_back(
                 VisiblePoint{point.p, Vec3f{}, Vec3f{}, point.wo, depth, BSDF(), point.medium, walk.beta, lambda});
@@ -262,11 +262,11 @@ void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const 
 // from a delta light, every medium event reached through specular surfaces only (at least one),
 // is a photon; see trace_camera_path for why. The emitted flux is kept apart from the walk's throughput, on which
 // Russian roulette acts as in every other integrator.
-void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, IterationPixelContext &ctx,
+void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, float time, IterationPixelContext &ctx,
                   SppmPhotonMap &surface_photons, SppmPhotonMap &medium_photons) {
     Sampler &sampler = ctx.sampler;
     const std::optional<LightPathStart> start =
-        start_light_path(scene, sampler, lambda, LightPathSources::LightsAndEmissiveMedia);
+        start_light_path(scene, sampler, lambda, time, LightPathSources::LightsAndEmissiveMedia);
     if (!start) return;
     // Area lights' paths leave into the medium outside their shape (the side they emit to).
     SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.sample_scratch, ctx.rays, false);
@@ -339,12 +339,15 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         IterationRenderer renderer(scene, budget, stats, progress);
         renderer.run([&](int iteration) {
             groups.start_iteration(scene, iteration, pixels.size(), photon_count);
+            // Visible points and photons of one iteration share its time, so that they meet.
+            const float time = renderer.time(iteration);
             // Camera pass: visible points and direct lighting.
             bool completed = renderer.for_each_pixel(iteration, 0, [&](Vec2i pixel, size_t index, IterationPixelContext &ctx) {
                 PixelState &state = pixels[index];
                 SampledWavelengths lambda = groups.wavelengths(groups.group_of_pixel(index));
                 ctx.sampler.get_1d(); // the hero wavelength is the group's
                 CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
+                cs.time = time;
                 state.vp = state.subsurface_vp = VisiblePoint{};
                 state.medium_vps.clear();
                 SampledSpectrum L(0.f);
@@ -367,7 +370,7 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             completed = renderer.for_each_path(iteration, photon_count, kPhotonDimension,
                                                [&](size_t index, IterationPixelContext &ctx) {
                 const int g = groups.group_of_light_path(index);
-                trace_photon(scene, max_depth_, groups.wavelengths(g), ctx, surface_maps[g], medium_maps[g]);
+                trace_photon(scene, max_depth_, groups.wavelengths(g), time, ctx, surface_maps[g], medium_maps[g]);
             });
             if (!completed) return false;
             float max_surface_radius = 0, max_medium_radius = 0;

@@ -83,6 +83,7 @@ struct Iteration {
     std::vector<float> volume_normalization; // per group: 1 / (4/3 pi r^3 N_group), in media
     // Light tracing: N light paths against one camera sample per pixel of the full frame.
     float light_paths, full_frame_pixels;
+    float time; // of every path of the iteration (IterationRenderer::time)
 };
 
 // A light subpath's vertices, in the storage of the thread that traced it.
@@ -119,7 +120,7 @@ void add_photons(std::span<const LightVertex> path, const SampledWavelengths &la
 
 // A ray leaving point towards p_to (with normal n_to, zero if none) and stopping short of it.
 Ray spawn_ray_between(const ScatteringPoint &point, Vec3f p_to, Vec3f n_to) {
-    return spawn_ray_to(point.p, point.ng, p_to, n_to);
+    return spawn_ray_to(point.p, point.ng, p_to, n_to, point.time);
 }
 
 // Contributions made with a terminated wavelength set (a dispersive refraction on either
@@ -200,7 +201,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
     const Iteration &it = ctx.it;
     const Scene &scene = it.scene;
     Sampler &sampler = ctx.pixel.sampler;
-    const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda);
+    const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda, it.time);
     if (!start) return;
     const Light &light = *start->light;
     const LightLeSample &les = start->les;
@@ -332,7 +333,8 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
                                          pdf_reverse, ctx.w.at(point.in_medium()));
     SampledSpectrum L = scattering.f * ls->L * (1 / (chosen->pmf * ls->pdf * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
-    Ray shadow = ls->is_infinite ? spawn_ray(point.p, point.ng, ls->wi) : spawn_ray_between(point, ls->p_light, ls->n_light);
+    Ray shadow = ls->is_infinite ? spawn_ray(point.p, point.ng, ls->wi, point.time)
+                                 : spawn_ray_between(point, ls->p_light, ls->n_light);
     SampledSpectrum T = transmittance(scene, shadow, point.medium_towards(ls->wi), ctx.lambda, ctx.pixel.rays);
     if (T.is_black()) return {};
     return in_group_measure(L * T, ctx.lambda.secondary_terminated(), ctx.hero_scale);
@@ -590,7 +592,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         const float shrink = std::pow(float(iteration + 1), (alpha_ - 1) / 2);
         const float radius = base_radius_ * shrink, medium_radius = base_medium_radius_ * shrink;
         Iteration it{scene, max_depth_, use_vc, radius, medium_radius, groups, {}, {}, {},
-                     float(pixel_count), float(full.x) * float(full.y)};
+                     float(pixel_count), float(full.x) * float(full.y), renderer.time(iteration)};
         for (int g = 0; g < groups.count(); ++g) {
             const float light_path_count = float(std::max<size_t>(groups.light_path_count(g), 1));
             // The kernels' acceptance regions times the light paths gathered (vcm_mis.h).
@@ -660,6 +662,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             const SampledWavelengths group_lambda = lambda;
             ctx.sampler.get_1d(); // dimension 0 is the hero wavelength, fixed by the group here
             CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
+            cs.time = it.time;
             SampledSpectrum L(0.f);
             if (auto camera_ray = scene.camera->generate_ray(cs, lambda)) {
                 L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_path, surface_photons[g],

@@ -14,7 +14,15 @@ namespace caustica {
 struct CameraSample {
     Vec2f p_film;              // raster coordinates, including the filter offset
     Vec2f p_lens;              // [0,1)^2
+    float time = 0;            // scene time within the shutter (geometry/ray.h)
     float filter_weight = 1;
+};
+
+// The interval over which the shutter is open: pbrt-v4's "shutteropen" and "shutterclose".
+// Camera rays spread uniformly over it; moving geometry blurs over it (motion blur).
+struct Shutter {
+    float open = 0, close = 1;
+    float time(float u) const { return open + u * (close - open); }
 };
 
 struct CameraRay {
@@ -52,8 +60,15 @@ struct FilmExtent {
 class Camera {
   public:
     virtual ~Camera() = default;
-    virtual std::optional<CameraRay> generate_ray(const CameraSample &sample,
-                                                  const SampledWavelengths &lambda) const = 0;
+    // The ray for a film and lens sample, leaving at the sample's time. The camera itself does
+    // not move: a moving camera renders from its start transform, with a warning (parser.cpp).
+    std::optional<CameraRay> generate_ray(const CameraSample &sample, const SampledWavelengths &lambda) const {
+        std::optional<CameraRay> r = ray_at_rest(sample, lambda);
+        if (r) r->ray.time = sample.time;
+        return r;
+    }
+    virtual std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
+                                                 const SampledWavelengths &lambda) const = 0;
     // Importance of a ray leaving the lens; *p_raster receives its film position. Zero when
     // the ray misses the film.
     virtual SampledSpectrum We(const Ray &ray, const SampledWavelengths &lambda,

@@ -19,11 +19,6 @@ struct ProjectiveParameters {
 
 ProjectiveParameters read_projective(const ParameterDictionary &params, Vec2i resolution) {
     ProjectiveParameters p;
-    // Shutter times only matter for motion blur (not rendered) and for the exposure time
-    // (camera_exposure_time()); they are read here so they count as used.
-    params.get_one_float("shutteropen", 0);
-    params.get_one_float("shutterclose", 1);
-
     p.lens_radius = params.get_one_float("lensradius", 0);
     if (!(p.lens_radius >= 0))
         throw InputError(params.location("lensradius"), "\"lensradius\" must not be negative");
@@ -61,8 +56,6 @@ CameraPtr create_perspective(const Transform &world_from_camera, const FilmExten
 // "focusdistance" (m from the film, default 10), "aperture" (a built-in shape or an image file).
 CameraPtr create_realistic(const Transform &world_from_camera, const FilmExtent &film,
                            const ParameterDictionary &params, const SourceLocation &loc) {
-    params.get_one_float("shutteropen", 0);
-    params.get_one_float("shutterclose", 1);
     const std::string lens_file = params.get_one_string("lensfile", "");
     if (lens_file.empty()) throw InputError(loc, "the \"realistic\" camera needs a lens description (\"lensfile\")");
     const float aperture_diameter = params.get_one_float("aperturediameter", 1);
@@ -124,8 +117,6 @@ CameraPtr create_camera(const std::string &type, const Transform &world_from_cam
                                                     p.lens_radius, p.focal_distance);
     }
     if (type == "spherical") {
-        params.get_one_float("shutteropen", 0);
-        params.get_one_float("shutterclose", 1);
         const std::string mapping = params.get_one_string("mapping", "equalarea");
         if (mapping != "equalarea" && mapping != "equirectangular")
             throw InputError(params.location("mapping"), "\"mapping\" must be \"equalarea\" or "
@@ -148,14 +139,13 @@ CameraPtr create_camera(const std::string &type, const Transform &world_from_cam
     return create_camera(type, world_from_camera, FilmExtent::whole_image(resolution), params, loc);
 }
 
-float camera_exposure_time(const ParameterDictionary &params, const SourceLocation &loc) {
+Shutter camera_shutter(const ParameterDictionary &params, const SourceLocation &loc) {
     float open = params.get_one_float("shutteropen", 0), close = params.get_one_float("shutterclose", 1);
-    float t = close - open;
-    if (!(t > 0))
+    if (!(close - open > 0) || !std::isfinite(close - open))
         throw InputError(loc, "the camera's shutter times (\"shutteropen\" " + std::to_string(open) +
                                   ", \"shutterclose\" " + std::to_string(close) +
                                   ") imply that the shutter never opens");
-    return t;
+    return {open, close};
 }
 
 } // namespace caustica

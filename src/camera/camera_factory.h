@@ -25,8 +25,9 @@ CameraPtr create_camera(const std::string &type, const Transform &world_from_cam
                         Vec2i resolution, const ParameterDictionary &params,
                         const SourceLocation &loc);
 
-// The exposure time pbrt-v4 hands to the film's sensor: the camera's "shutterclose" (default 1)
-// minus "shutteropen" (default 0). An InputError unless positive.
-float camera_exposure_time(const ParameterDictionary &camera_params, const SourceLocation &loc);
+// The camera's "shutteropen" (default 0) and "shutterclose" (default 1). An InputError unless the
+// shutter is open for a positive time, which is also the exposure time pbrt-v4 hands to the film's
+// sensor.
+Shutter camera_shutter(const ParameterDictionary &camera_params, const SourceLocation &loc);
 
 } // namespace caustica

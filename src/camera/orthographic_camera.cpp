@@ -11,7 +11,7 @@ OrthographicCamera::OrthographicCamera(const Transform &world_from_camera, const
                                        float focal_distance)
     : ProjectiveCamera(world_from_camera, Transform(), screen, film, lens_radius, focal_distance) {}
 
-std::optional<CameraRay> OrthographicCamera::generate_ray(const CameraSample &sample,
+std::optional<CameraRay> OrthographicCamera::ray_at_rest(const CameraSample &sample,
                                                           const SampledWavelengths &) const {
     Vec3f o = camera_from_raster_.apply_point({sample.p_film.x, sample.p_film.y, 0});
     Vec3f d{0, 0, 1};

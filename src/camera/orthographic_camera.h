@@ -13,7 +13,7 @@ class OrthographicCamera final : public ProjectiveCamera {
     OrthographicCamera(const Transform &world_from_camera, const FilmExtent &film,
                        const ScreenWindow &screen, float lens_radius, float focal_distance);
 
-    std::optional<CameraRay> generate_ray(const CameraSample &sample,
+    std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
                                           const SampledWavelengths &lambda) const override;
     // Zero / empty: see models_importance().
     SampledSpectrum We(const Ray &ray, const SampledWavelengths &lambda,

@@ -22,7 +22,7 @@ PerspectiveCamera::PerspectiveCamera(const Transform &world_from_camera, const F
     image_area_ = std::abs((p_max.x - p_min.x) * (p_max.y - p_min.y));
 }
 
-std::optional<CameraRay> PerspectiveCamera::generate_ray(const CameraSample &sample,
+std::optional<CameraRay> PerspectiveCamera::ray_at_rest(const CameraSample &sample,
                                                          const SampledWavelengths &) const {
     Vec3f p_camera = camera_from_raster_.apply_point({sample.p_film.x, sample.p_film.y, 0});
     Vec3f o{0, 0, 0};

@@ -16,7 +16,7 @@ class PerspectiveCamera final : public ProjectiveCamera {
     PerspectiveCamera(const Transform &world_from_camera, const FilmExtent &film, float fov,
                       const ScreenWindow &screen, float lens_radius, float focal_distance);
 
-    std::optional<CameraRay> generate_ray(const CameraSample &sample,
+    std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
                                           const SampledWavelengths &lambda) const override;
     SampledSpectrum We(const Ray &ray, const SampledWavelengths &lambda,
                        Vec2f *p_raster = nullptr) const override;

@@ -56,7 +56,7 @@ bool RealisticCamera::transmits() const {
     return std::any_of(pupil_bounds_.begin(), pupil_bounds_.end(), [](const PupilBounds &b) { return !b.empty(); });
 }
 
-std::optional<CameraRay> RealisticCamera::generate_ray(const CameraSample &sample, const SampledWavelengths &) const {
+std::optional<CameraRay> RealisticCamera::ray_at_rest(const CameraSample &sample, const SampledWavelengths &) const {
     // The film point: raster x runs against camera x, because the lens turns the image over.
     const double sx = double(sample.p_film.x) / film_.full_resolution.x;
     const double sy = double(sample.p_film.y) / film_.full_resolution.y;

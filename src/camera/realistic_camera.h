@@ -35,7 +35,7 @@ class RealisticCamera final : public CameraWithoutImportance {
     RealisticCamera(const Transform &world_from_camera, const FilmExtent &film, LensSystem lens,
                     std::optional<ApertureMask> mask);
 
-    std::optional<CameraRay> generate_ray(const CameraSample &sample,
+    std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
                                           const SampledWavelengths &lambda) const override;
     Vec3f position() const override { return world_from_camera_.apply_point({0, 0, 0}); }
 

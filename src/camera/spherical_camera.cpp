@@ -24,7 +24,7 @@ Vec3f SphericalCamera::direction(Vec2f p_raster) const {
     return {d.x, d.z, d.y};
 }
 
-std::optional<CameraRay> SphericalCamera::generate_ray(const CameraSample &sample, const SampledWavelengths &) const {
+std::optional<CameraRay> SphericalCamera::ray_at_rest(const CameraSample &sample, const SampledWavelengths &) const {
     CameraRay cr;
     cr.ray.o = world_from_camera_.apply_point({0, 0, 0});
     cr.ray.d = normalize(world_from_camera_.apply_vector(direction(sample.p_film)));

@@ -18,7 +18,7 @@ class SphericalCamera final : public CameraWithoutImportance {
     SphericalCamera(const Transform &world_from_camera, const FilmExtent &film, Mapping mapping)
         : world_from_camera_(world_from_camera), film_(film), mapping_(mapping) {}
 
-    std::optional<CameraRay> generate_ray(const CameraSample &sample,
+    std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
                                           const SampledWavelengths &lambda) const override;
     // Camera-space direction of a raster position.
     Vec3f direction(Vec2f p_raster) const;

@@ -184,11 +184,12 @@ void Film::restore_state(std::istream &in) {
     splats_.set_overflow(overflow != 0);
 }
 
-CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter) {
+CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter, const Shutter *shutter) {
     FilterSample fs = filter.sample(sampler.get_pixel_2d());
     CameraSample cs;
     cs.p_film = {pixel.x + 0.5f + fs.p.x, pixel.y + 0.5f + fs.p.y};
     cs.p_lens = sampler.get_2d();
+    if (shutter) cs.time = shutter->time(sampler.get_1d());
     cs.filter_weight = fs.weight;
     return cs;
 }

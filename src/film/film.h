@@ -155,8 +155,9 @@ class Film {
 
 // The camera sample for a pixel: the position within the pixel (pixel + 0.5 + a filter offset
 // drawn from get_pixel_2d()), the lens position (get_2d()) and the filter weight. Consumes the
-// sampler dimensions documented in sampler.h.
-CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter);
+// sampler dimensions documented in sampler.h; with a shutter (Scene::motion_shutter()), also the
+// time (one get_1d(), dimension 5), and without one the time is 0.
+CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter, const Shutter *shutter = nullptr);
 
 // pbrt-v4's "rgb" film ("gbuffer" and "spectral" are accepted with a warning and written as
 // rgb): "xresolution" (1280), "yresolution" (720), "filename" ("pbrt.exr"), "cropwindow",

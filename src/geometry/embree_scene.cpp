@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -79,6 +80,53 @@ void transform_interaction(const Transform &render_from_instance, SurfaceInterac
     Vec3f ns = normalize(render_from_instance.apply_normal(si->shading.n));
     si->set_shading(ns, render_from_instance.apply_vector(si->shading.dpdu),
                     render_from_instance.apply_vector(si->shading.dpdv));
+}
+
+// Embree's quaternion decomposition of an affine map m = T R S: T the translation, R a rotation
+// and S upper triangular, from the Gram-Schmidt QR factorisation of m's linear part. R is kept a
+// proper rotation (a quaternion cannot reflect), so a mirroring m has a negative scale_z.
+RTCQuaternionDecomposition quaternion_decomposition(const Matrix4 &m) {
+    const Vec3f c0{m.m[0][0], m.m[1][0], m.m[2][0]}, c1{m.m[0][1], m.m[1][1], m.m[2][1]},
+        c2{m.m[0][2], m.m[1][2], m.m[2][2]};
+    const float s00 = length(c0);
+    const Vec3f q0 = c0 / s00;
+    const float s01 = dot(q0, c1);
+    const Vec3f u1 = c1 - q0 * s01;
+    const float s11 = length(u1);
+    const Vec3f q1 = u1 / s11;
+    const float s02 = dot(q0, c2), s12 = dot(q1, c2);
+    const Vec3f u2 = c2 - q0 * s02 - q1 * s12;
+    float s22 = length(u2);
+    Vec3f q2 = u2 / s22;
+    if (dot(cross(q0, q1), q2) < 0) {
+        q2 = -q2;
+        s22 = -s22;
+    }
+    // The quaternion of the rotation whose columns are q0, q1, q2 (Shoemake 1985), from the
+    // largest of its four components for accuracy.
+    const float r[3][3] = {{q0.x, q1.x, q2.x}, {q0.y, q1.y, q2.y}, {q0.z, q1.z, q2.z}};
+    const float trace = r[0][0] + r[1][1] + r[2][2];
+    float w, x, y, z;
+    if (trace > 0) {
+        const float s = 2 * std::sqrt(trace + 1);
+        w = s / 4, x = (r[2][1] - r[1][2]) / s, y = (r[0][2] - r[2][0]) / s, z = (r[1][0] - r[0][1]) / s;
+    } else if (r[0][0] > r[1][1] && r[0][0] > r[2][2]) {
+        const float s = 2 * std::sqrt(1 + r[0][0] - r[1][1] - r[2][2]);
+        w = (r[2][1] - r[1][2]) / s, x = s / 4, y = (r[0][1] + r[1][0]) / s, z = (r[0][2] + r[2][0]) / s;
+    } else if (r[1][1] > r[2][2]) {
+        const float s = 2 * std::sqrt(1 + r[1][1] - r[0][0] - r[2][2]);
+        w = (r[0][2] - r[2][0]) / s, x = (r[0][1] + r[1][0]) / s, y = s / 4, z = (r[1][2] + r[2][1]) / s;
+    } else {
+        const float s = 2 * std::sqrt(1 + r[2][2] - r[0][0] - r[1][1]);
+        w = (r[1][0] - r[0][1]) / s, x = (r[0][2] + r[2][0]) / s, y = (r[1][2] + r[2][1]) / s, z = s / 4;
+    }
+    RTCQuaternionDecomposition qd;
+    rtcInitQuaternionDecomposition(&qd);
+    rtcQuaternionDecompositionSetScale(&qd, s00, s11, s22);
+    rtcQuaternionDecompositionSetSkew(&qd, s01, s02, s12);
+    rtcQuaternionDecompositionSetQuaternion(&qd, w, x, y, z);
+    rtcQuaternionDecompositionSetTranslation(&qd, m.m[0][3], m.m[1][3], m.m[2][3]);
+    return qd;
 }
 
 } // namespace
@@ -161,23 +209,54 @@ int GeometryScene::add_prototype(
     return int(prototypes_.size()) - 1;
 }
 
-void GeometryScene::add_instance(int prototype, const Transform &render_from_instance) {
+void GeometryScene::add_instance(int prototype, const AnimatedTransform &render_from_instance) {
     if (committed_) throw std::logic_error("GeometryScene::add_instance after commit");
     if (prototype < 0 || size_t(prototype) >= prototypes_.size())
         throw std::out_of_range("GeometryScene::add_instance: no such prototype");
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geometry, prototypes_[prototype].scene);
-    float xfm[12];
-    const Matrix4 &m = render_from_instance.matrix();
-    for (int column = 0; column < 4; ++column)
-        for (int row = 0; row < 3; ++row) xfm[3 * column + row] = m.m[row][column];
-    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    const bool moving = render_from_instance.is_animated();
+    if (moving) {
+        rtcSetGeometryTimeStepCount(geometry, 2);
+        const RTCQuaternionDecomposition start = quaternion_decomposition(render_from_instance.start.matrix()),
+                                         end = quaternion_decomposition(render_from_instance.end.matrix());
+        rtcSetGeometryTransformQuaternion(geometry, 0, &start);
+        rtcSetGeometryTransformQuaternion(geometry, 1, &end);
+    } else {
+        float xfm[12];
+        const Matrix4 &m = render_from_instance.start.matrix();
+        for (int column = 0; column < 4; ++column)
+            for (int row = 0; row < 3; ++row) xfm[3 * column + row] = m.m[row][column];
+        rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    }
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(scene_, geometry, unsigned(slots_.size()));
     rtcReleaseGeometry(geometry);
     check_device("adding an object instance");
-    instances_.push_back({prototype, render_from_instance, render_from_instance.inverse()});
+    instances_.push_back({prototype, render_from_instance.start, render_from_instance.start.inverse(),
+                          moving ? geometry : nullptr});
+    moving_instances_ += moving;
     slots_.push_back({Primitive{}, int(instances_.size()) - 1});
+}
+
+void GeometryScene::add_moving(std::shared_ptr<const ShapeGroup> group, PrimitiveAttributes attributes,
+                               const AnimatedTransform &render_from_object) {
+    if (!group || (!group->mesh && !group->analytic)) return;
+    std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> shape;
+    shape.emplace_back(std::move(group), std::move(attributes));
+    add_instance(add_prototype(std::move(shape)), render_from_object);
+}
+
+Transform GeometryScene::transform_at(const Instance &instance, float u) const {
+    float xfm[12];
+    rtcGetGeometryTransform(instance.moving, u, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    Matrix4 m;
+    for (int column = 0; column < 4; ++column)
+        for (int row = 0; row < 3; ++row) m.m[row][column] = xfm[3 * column + row];
+    m.m[3][0] = m.m[3][1] = m.m[3][2] = 0;
+    m.m[3][3] = 1;
+    // Embree interpolates between invertible placements by invertible factors.
+    return Transform(m, *inverse(m));
 }
 
 void GeometryScene::commit() {
@@ -199,7 +278,7 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     rayhit.ray.dir_z = ray.d.z;
     rayhit.ray.tnear = 0;
     rayhit.ray.tfar = ray.t_max;
-    rayhit.ray.time = 0;
+    rayhit.ray.time = times_.fraction(ray.time);
     rayhit.ray.mask = ~0u;
     rayhit.ray.id = 0;
     rayhit.ray.flags = 0;
@@ -222,9 +301,14 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     // Shading data are computed where the shape lives and then moved to render space. The ray
     // parameter is the same in both spaces (the maps are affine).
     Ray local = ray;
+    Transform moved;
+    const Transform *render_from_instance = nullptr;
     if (instance) {
-        local.o = instance->instance_from_render.apply_point(ray.o);
-        local.d = instance->instance_from_render.apply_vector(ray.d);
+        if (instance->moving) moved = transform_at(*instance, rayhit.ray.time);
+        render_from_instance = instance->moving ? &moved : &instance->render_from_instance;
+        const Transform instance_from_render = instance->moving ? moved.inverse() : instance->instance_from_render;
+        local.o = instance_from_render.apply_point(ray.o);
+        local.d = instance_from_render.apply_vector(ray.d);
     }
     float t = rayhit.ray.tfar;
     unsigned index = rayhit.hit.primID;
@@ -238,10 +322,11 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     } else {
         *si = group.analytic->interaction(local, t);
     }
-    if (instance) transform_interaction(instance->render_from_instance, si);
+    if (render_from_instance) transform_interaction(*render_from_instance, si);
 
     si->wo = -normalize(ray.d);
     si->t = t;
+    si->time = ray.time;
     si->face_index = int(index);
     si->material = primitive->attributes.material;
     si->medium_interface = primitive->attributes.medium_interface;
@@ -263,7 +348,7 @@ bool GeometryScene::occluded(const Ray &ray) const {
     r.tnear = 0;
     // Embree's interval is closed; stop one float short of t_max to make it open.
     r.tfar = std::nextafter(ray.t_max, 0.f);
-    r.time = 0;
+    r.time = times_.fraction(ray.time);
     r.mask = ~0u;
     r.id = 0;
     r.flags = 0;

@@ -1,7 +1,17 @@
 // The scene's geometry in Embree: shapes, prototypes (object instancing) and instances, and the
 // closest-hit and any-hit queries that turn Embree's hits into SurfaceInteractions.
+//
+// Motion blur: a moving shape or instance is an Embree instance with two time steps, given as
+// Embree's quaternion decompositions T R S of its start and end placements, with S upper
+// triangular (scale and skew). Embree interpolates T and S linearly and R by slerp, and a hit is
+// moved to render space by the very transform Embree traced it with (rtcGetGeometryTransform).
+// pbrt-v4 interpolates a polar decomposition (S symmetric) instead; the two agree for every
+// motion of translations, rotations and uniform scales, and for non-uniform scales applied
+// after the rotation (nearest the object), and differ between the end points only when a
+// non-uniform scale is applied before a rotation that changes.
 #pragma once
 
+#include "core/animated_transform.h"
 #include "geometry/interaction.h"
 #include "geometry/shape_group.h"
 
@@ -37,12 +47,19 @@ class GeometryScene {
     // An object that instances refer to, built as its own Embree scene. Returns its index.
     int add_prototype(
         std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> shapes);
-    void add_instance(int prototype, const Transform &render_from_instance);
+    void add_instance(int prototype, const AnimatedTransform &render_from_instance);
+    // A shape whose group is built in its object space, placed by a moving transform.
+    void add_moving(std::shared_ptr<const ShapeGroup> group, PrimitiveAttributes attributes,
+                    const AnimatedTransform &render_from_object);
+    // When moving placements are at their start and end (rays' times are scene times).
+    void set_transform_times(TransformTimes times) { times_ = times; }
+    bool moves() const { return moving_instances_ > 0; }
     // Builds the acceleration structure (high quality, robust traversal). Call once.
     void commit();
 
     // Queries, safe to call from many threads at once after commit().
-    // Closest hit with 0 < t <= ray.t_max; fills every field of *si.
+    // Closest hit with 0 < t <= ray.t_max, with the geometry where it is at ray.time; fills every
+    // field of *si.
     bool intersect(const Ray &ray, SurfaceInteraction *si) const;
     // Any hit with 0 < t < ray.t_max.
     bool occluded(const Ray &ray) const;
@@ -62,6 +79,7 @@ class GeometryScene {
     struct Instance {
         int prototype;
         Transform render_from_instance, instance_from_render;
+        RTCGeometry moving = nullptr; // a moving instance's Embree geometry (owned by the scene)
     };
     struct Prototype {
         RTCScene scene;
@@ -77,13 +95,16 @@ class GeometryScene {
     void attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group);
     RTCScene new_scene() const;
     void check_device(const char *what) const;
+    // The placement of a moving instance at Embree time u in [0, 1].
+    Transform transform_at(const Instance &instance, float u) const;
 
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<Slot> slots_;
     std::vector<Prototype> prototypes_;
     std::vector<Instance> instances_;
-    size_t shape_count_ = 0, triangle_count_ = 0;
+    size_t shape_count_ = 0, triangle_count_ = 0, moving_instances_ = 0;
+    TransformTimes times_;
     bool committed_ = false;
 };
 

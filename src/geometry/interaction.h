@@ -22,6 +22,7 @@ struct SurfaceInteraction {
         Vec3f dpdu, dpdv;
     } shading;
     float t = 0;    // ray parameter of the hit
+    float time = 0; // the ray's time (geometry/ray.h), which rays spawned here keep
     int face_index = 0;
 
     const Material *material = nullptr;      // null: a boundary between media only
@@ -30,9 +31,9 @@ struct SurfaceInteraction {
     // The participating medium inside the material here, set with the BSDF (shade(), material.h).
     const Medium *interior = nullptr;
 
-    Ray spawn_ray(Vec3f d) const { return caustica::spawn_ray(p, n, d); }
+    Ray spawn_ray(Vec3f d) const { return caustica::spawn_ray(p, n, d, time); }
     Ray spawn_ray_to(Vec3f p_to, Vec3f n_to = {}) const {
-        return caustica::spawn_ray_to(p, n, p_to, n_to);
+        return caustica::spawn_ray_to(p, n, p_to, n_to, time);
     }
     // Replaces the shading frame; keeps the shading normal on the geometric normal's side.
     void set_shading(Vec3f ns, Vec3f dpdus, Vec3f dpdvs) {

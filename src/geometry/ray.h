@@ -10,6 +10,10 @@ namespace caustica {
 struct Ray {
     Vec3f o, d;
     float t_max = Infinity;
+    // When along the shutter the ray travels (scene time, as in TransformTimes and the camera's
+    // shutteropen/shutterclose): moving geometry is intersected where it is at this time. Every
+    // ray of a path, and of the subpaths joined to it, has the path's time.
+    float time = 0;
     Vec3f at(float t) const { return o + d * t; }
 };
 
@@ -37,16 +41,16 @@ inline Vec3f offset_ray_origin(Vec3f p, Vec3f n, Vec3f w) {
     return o;
 }
 
-inline Ray spawn_ray(Vec3f p, Vec3f n, Vec3f d) { return {offset_ray_origin(p, n, d), d, Infinity}; }
+inline Ray spawn_ray(Vec3f p, Vec3f n, Vec3f d, float time) { return {offset_ray_origin(p, n, d), d, Infinity, time}; }
 
 // A ray from surface point p (normal n) towards point p_to, stopping just short of it so that an
 // occlusion test does not hit the target surface itself. n_to is the target's normal, or a zero
 // vector for points not on a surface.
-inline Ray spawn_ray_to(Vec3f p, Vec3f n, Vec3f p_to, Vec3f n_to = {}) {
+inline Ray spawn_ray_to(Vec3f p, Vec3f n, Vec3f p_to, Vec3f n_to, float time) {
     Vec3f o = offset_ray_origin(p, n, p_to - p);
     Vec3f target = (n_to == Vec3f{}) ? p_to : offset_ray_origin(p_to, n_to, o - p_to);
     Vec3f d = target - o;
-    return {o, d, 1 - 1e-4f};
+    return {o, d, 1 - 1e-4f, time};
 }
 
 } // namespace caustica

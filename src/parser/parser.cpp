@@ -38,10 +38,10 @@ bool is_finite(const Matrix4 &m) {
 
 // The state that AttributeBegin saves and AttributeEnd restores (pbrt-v4's GraphicsState).
 struct GraphicsState {
-    Transform ctm;
-    // ActiveTransform: transform directives update the (only) start transform unless EndTime
-    // alone is active; the end transform of motion blur is not kept.
-    bool start_transform_active = true;
+    // The current transformation at the start and at the end of the TransformTimes (motion
+    // blur); ActiveTransform chooses which of the two the transform directives change.
+    Transform ctm, ctm_end;
+    bool start_transform_active = true, end_transform_active = true;
     bool reverse_orientation = false;
     int material_index = -1;
     std::string material_name;
@@ -454,27 +454,33 @@ class SceneParser {
             error(directive, directive.text + " is only allowed after WorldBegin");
     }
 
-    // Transform directive `d` applies `t` on the right of the CTM.
+    // Transform directive `d` applies `t` on the right of the active CTMs.
     void apply(const Token &d, const Transform &t) {
-        if (state_.start_transform_active) set_ctm(d, state_.ctm * t);
+        if (state_.start_transform_active) set_checked(d, state_.ctm, state_.ctm * t);
+        if (state_.end_transform_active) set_checked(d, state_.ctm_end, state_.ctm_end * t);
     }
 
     void set_ctm(const Token &d, const Transform &t) {
-        if (!state_.start_transform_active) return;
+        if (state_.start_transform_active) set_checked(d, state_.ctm, t);
+        if (state_.end_transform_active) set_checked(d, state_.ctm_end, t);
+    }
+
+    void set_checked(const Token &d, Transform &ctm, const Transform &t) {
         // Each transform may be invertible while their product over- or underflows single
         // precision (Scale 1e-30 twice): its matrix or inverse would then hold infinities and
         // turn every point it moves into NaN.
         if (!is_finite(t.matrix()) || !is_finite(t.inverse_matrix()))
             error(d, d.text + ": the current transformation is not invertible in single "
                               "precision (its entries or those of its inverse overflow)");
-        state_.ctm = t;
+        ctm = t;
     }
 
-    void warn_motion_blur(const Token &directive) {
-        if (warned_motion_blur_) return;
-        warned_motion_blur_ = true;
-        warn(directive.location(), "motion blur is not supported: only the start transform "
-                                   "is used");
+    bool ctm_moves() const { return !(state_.ctm == state_.ctm_end); }
+
+    // What pbrt-v4 does with a moving transform where it supports none: a warning, and the start.
+    void warn_if_moving(const Token &d, const std::string &what) {
+        if (ctm_moves())
+            warn(d.location(), what + " cannot move (as in pbrt-v4): the start transform is used");
     }
 
     // ---- Directives ------------------------------------------------------------------------
@@ -487,18 +493,10 @@ class SceneParser {
 
     void active_transform(const Token &d) {
         Token which = next();
-        if (which.kind == Token::Kind::Word && which.text == "All") {
-            state_.start_transform_active = true;
-            return;
-        }
-        if (which.kind == Token::Kind::Word && which.text == "StartTime") {
-            state_.start_transform_active = true;
-            warn_motion_blur(d);
-            return;
-        }
-        if (which.kind == Token::Kind::Word && which.text == "EndTime") {
-            state_.start_transform_active = false;
-            warn_motion_blur(d);
+        if (which.kind == Token::Kind::Word &&
+            (which.text == "All" || which.text == "StartTime" || which.text == "EndTime")) {
+            state_.start_transform_active = which.text != "EndTime";
+            state_.end_transform_active = which.text != "StartTime";
             return;
         }
         error(which, "ActiveTransform: expected StartTime, EndTime or All, found " +
@@ -561,8 +559,9 @@ class SceneParser {
     void camera(const Token &d) {
         SceneEntity e = entity(d, "camera type");
         require_options_block(d);
+        warn_if_moving(d, "the camera");
         Transform world_from_camera = state_.ctm.inverse();
-        named_frames_["camera"] = world_from_camera;
+        named_frames_["camera"] = {world_from_camera, state_.ctm_end.inverse()};
         desc_.camera.type = std::move(e.type);
         desc_.camera.params = std::move(e.params);
         desc_.camera.loc = e.loc;
@@ -597,7 +596,7 @@ class SceneParser {
     }
 
     void coordinate_system(const Token &d) {
-        named_frames_[string_argument(d, "coordinate system name")] = state_.ctm;
+        named_frames_[string_argument(d, "coordinate system name")] = {state_.ctm, state_.ctm_end};
     }
 
     void coord_sys_transform(const Token &d) {
@@ -608,7 +607,8 @@ class SceneParser {
                                    "\"; the transform is unchanged");
             return;
         }
-        state_.ctm = it->second;
+        state_.ctm = it->second.first;
+        state_.ctm_end = it->second.second;
     }
 
     void film(const Token &d) {
@@ -702,6 +702,7 @@ class SceneParser {
         require_world_block(d);
         LightEntity light;
         static_cast<SceneEntity &>(light) = std::move(e);
+        warn_if_moving(d, "a light");
         light.render_from_object = state_.ctm;
         light.medium = state_.outside_medium;
         desc_.lights.push_back(std::move(light));
@@ -746,6 +747,7 @@ class SceneParser {
                              existing.loc.to_string() + ")");
         m.params = std::move(e.params);
         m.loc = e.loc;
+        warn_if_moving(d, "a medium");
         m.render_from_object = state_.ctm;
         desc_.media.push_back(std::move(m));
     }
@@ -817,7 +819,7 @@ class SceneParser {
         if (active_instance_ >= 0)
             error(d, "ObjectInstance inside an object definition (ObjectBegin at " +
                          desc_.instances[active_instance_].loc.to_string() + ")");
-        desc_.instance_uses.push_back({name, state_.ctm, d.location()});
+        desc_.instance_uses.push_back({name, AnimatedTransform(state_.ctm, state_.ctm_end), d.location()});
     }
 
     void option(const Token &d) {
@@ -840,7 +842,8 @@ class SceneParser {
             {"disablewavelengthjitter", "bool"}, {"forcediffuse", "bool"},
             {"pixelstats", "bool"},              {"wavefront", "bool"},
             {"seed", "integer"},                 {"displacementedgescale", "float"},
-            {"msereferenceimage", "string"},     {"msereferenceout", "string"}};
+            {"msereferenceimage", "string"},     {"msereferenceout", "string"},
+            {"rendercoordsys", "string"}};
         auto it = option_types.find(normalized);
         if (it == option_types.end()) {
             warn(d.location(), "unknown option \"" + written + "\" ignored");
@@ -852,6 +855,12 @@ class SceneParser {
         p.loc = d.location();
         add_value(p, value_kind(p.type), value);
         validate_parameter(p);
+        // Caustica renders in world space whatever the choice: it changes only rounding, and
+        // pbrt-v4's interpolation of moving object instances (scenes/motion/moving-sphere.pbrt).
+        if (p.name == "rendercoordsys" && p.strings.at(0) != "camera" && p.strings.at(0) != "cameraworld" &&
+            p.strings.at(0) != "world")
+            error(value, "Option \"rendercoordsys\": expected \"camera\", \"cameraworld\" or \"world\", "
+                         "found \"" + p.strings.at(0) + "\"");
         std::erase_if(options_, [&](const ParsedParameter &o) { return o.name == p.name; });
         options_.push_back(std::move(p));
     }
@@ -893,6 +902,17 @@ class SceneParser {
         ShapeEntity s;
         static_cast<SceneEntity &>(s) = std::move(e);
         s.render_from_object = state_.ctm;
+        if (ctm_moves()) {
+            // pbrt-v4 refuses moving emitters too: light sampling would need the shape's time.
+            if (state_.area_light)
+                error(d, "an area light cannot move (as in pbrt-v4): the shape's transform differs "
+                         "between the start and end times (ActiveTransform)");
+            if (active_instance_ >= 0)
+                warn(d.location(), "a shape inside ObjectBegin/ObjectEnd cannot move: the start "
+                                   "transform is used (move the ObjectInstance instead)");
+            else
+                s.render_from_object_end = state_.ctm_end;
+        }
         s.reverse_orientation = state_.reverse_orientation;
         s.material_index = state_.material_index;
         s.material_name = state_.material_name;
@@ -929,6 +949,7 @@ class SceneParser {
         t.type = std::move(type);
         t.params = std::move(params);
         t.loc = d.location();
+        warn_if_moving(d, "a texture's space");
         t.render_from_object = state_.ctm;
         t.name = std::move(name);
         t.texture_class = std::move(texture_class);
@@ -936,9 +957,11 @@ class SceneParser {
     }
 
     void transform_times(const Token &d) {
-        number_arguments(d, 2);
+        std::vector<double> v = number_arguments(d, 2);
         require_options_block(d);
-        warn_motion_blur(d);
+        if (!(v[1] >= v[0]) || !std::isfinite(v[0]) || !std::isfinite(v[1]))
+            error(d, "TransformTimes: the end time must not precede the start time");
+        desc_.transform_times = {float(v[0]), float(v[1])};
     }
 
     void translate(const Token &d) {
@@ -949,9 +972,9 @@ class SceneParser {
     void world_begin(const Token &d) {
         require_options_block(d);
         in_world_ = true;
-        state_.ctm = Transform();
-        state_.start_transform_active = true;
-        named_frames_["world"] = Transform();
+        state_.ctm = state_.ctm_end = Transform();
+        state_.start_transform_active = state_.end_transform_active = true;
+        named_frames_["world"] = {Transform(), Transform()};
         desc_.color_space = film_color_space_ ? film_color_space_ : state_.color_space;
     }
 
@@ -1001,13 +1024,13 @@ class SceneParser {
     std::vector<PushedState> pushed_;
     // Pushed states below this depth belong to a file that Imports the current one.
     size_t attribute_floor_ = 0;
-    std::map<std::string, Transform> named_frames_;
+    std::map<std::string, std::pair<Transform, Transform>> named_frames_; // start and end
     bool in_world_ = false;
     int active_instance_ = -1;  // index into desc_.instances while inside ObjectBegin
     const RGBColorSpace *film_color_space_ = nullptr;
     std::vector<NameReference> material_references_, medium_references_;
     std::vector<ParsedParameter> options_;
-    bool warned_motion_blur_ = false, warned_transform_begin_ = false;
+    bool warned_transform_begin_ = false;
 };
 
 } // namespace

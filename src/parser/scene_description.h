@@ -9,11 +9,13 @@
 // render_from_instance * shape.render_from_object (as pbrt-v4 does).
 #pragma once
 
+#include "core/animated_transform.h"
 #include "core/error.h"
 #include "core/transform.h"
 #include "params/parameters.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,7 +40,9 @@ struct CameraEntity : SceneEntity {
 };
 
 struct ShapeEntity : SceneEntity {
-    Transform render_from_object;
+    Transform render_from_object;  // at the start of the TransformTimes
+    // Where the shape is at the end of the TransformTimes, when it moves (motion blur).
+    std::optional<Transform> render_from_object_end;
     bool reverse_orientation = false;
     int material_index = -1;    // into SceneDescription::materials, or
     std::string material_name;  // a NamedMaterial (when non-empty); neither: pbrt's default "diffuse"
@@ -67,7 +71,7 @@ struct InstanceDefinition {
 
 struct InstanceUse {
     std::string name;
-    Transform render_from_instance;
+    AnimatedTransform render_from_instance;
     SourceLocation loc;
 };
 
@@ -87,11 +91,13 @@ struct SceneDescription {
     std::vector<MediumEntity> media;
     std::vector<InstanceDefinition> instances;
     std::vector<InstanceUse> instance_uses;
+    TransformTimes transform_times; // when moving shapes and instances are at their start and end
     // Option directives that were recognised, as typed parameters under pbrt's normalised names
     // (lower case, no '-' or '_'): "bool disablepixeljitter", "bool disabletexturefiltering",
     // "bool disablewavelengthjitter", "bool forcediffuse", "bool pixelstats", "bool wavefront",
     // "integer seed", "float displacementedgescale", "string msereferenceimage",
-    // "string msereferenceout". A later Option replaces an earlier one of the same name.
+    // "string msereferenceout", "string rendercoordsys". A later Option replaces an earlier one
+    // of the same name.
     ParameterDictionary options;
     std::vector<std::string> warnings;  // also printed through caustica::warning
 };

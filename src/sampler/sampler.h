@@ -6,8 +6,10 @@
 //   dimension 0      get_1d()        hero wavelength (SampledWavelengths::sample_visible)
 //   dimensions 1-2   get_pixel_2d()  position within the pixel (through the filter's sampler)
 //   dimensions 3-4   get_2d()        lens position (thin-lens depth of field)
+//   dimension 5      get_1d()        the time within the shutter, only when geometry moves
 //   dimensions 5...  integrator      path vertices, in the order the integrator requests them
-// get_camera_sample() (film/film.h) consumes dimensions 1-4. Every get_1d() advances the
+//                                    (6... with moving geometry)
+// get_camera_sample() (film/film.h) consumes dimensions 1-4 (1-5 with moving geometry). Every get_1d() advances the
 // dimension by one and every get_2d() / get_pixel_2d() by two, so start_pixel_sample(p, i, d)
 // continues a sample's sequence exactly where the d-th value would have come.
 #pragma once

@@ -224,7 +224,9 @@ const Material *material_for(const ShapeEntity &s, const MaterialTable &table) {
 void add_shapes(const SceneDescription &d, const MaterialTable &materials, const MediumTable &media,
                 Scene &scene) {
     for (const ShapeEntity &s : d.shapes) {
-        auto group = create_shape(s.type, s.render_from_object, s.reverse_orientation, s.params, s.loc);
+        // A moving shape is built in its own space and placed by Embree at each ray's time.
+        auto group = create_shape(s.type, s.render_from_object_end ? Transform() : s.render_from_object,
+                                  s.reverse_orientation, s.params, s.loc);
         if (!group) continue;
         PrimitiveAttributes attrs;
         attrs.material = material_for(s, materials);
@@ -240,7 +242,10 @@ void add_shapes(const SceneDescription &d, const MaterialTable &materials, const
         }
         scene.shape_count += 1;
         scene.triangle_count += group->triangle_count();
-        scene.geometry.add(group, std::move(attrs));
+        if (s.render_from_object_end)
+            scene.geometry.add_moving(group, std::move(attrs), {s.render_from_object, *s.render_from_object_end});
+        else
+            scene.geometry.add(group, std::move(attrs));
         scene.shape_groups.push_back(std::move(group));
     }
 }
@@ -386,10 +391,11 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     check_sample_count(d.sampler, ov);
     std::unique_ptr<Filter> filter =
         create_filter(d.filter.type.empty() ? "gaussian" : d.filter.type, d.filter.params, d.filter.loc);
+    scene->shutter = camera_shutter(d.camera.params, d.camera.loc);
     scene->film = create_film(d.film.type.empty() ? "rgb" : d.film.type, d.film.params, d.color_space,
                               std::move(filter), d.film.loc,
                               FilmOverrides{Vec2i{ov.width, ov.height}, ov.crop_window, ov.pixel_bounds},
-                              camera_exposure_time(d.camera.params, d.camera.loc));
+                              scene->shutter.close - scene->shutter.open);
     scene->film->set_monochromatic(ov.wavelength > 0);
     scene->output_filename = scene->film->filename();
     scene->camera = create_camera(d.camera.type.empty() ? "perspective" : d.camera.type,
@@ -407,6 +413,7 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     MaterialTable materials = create_materials(d, textures, *scene);
     MediumTable media = create_media(d, *scene);
     scene->camera_medium = find_medium(media, d.camera.medium);
+    scene->geometry.set_transform_times(d.transform_times);
     add_shapes(d, materials, media, *scene);
     add_instances(d, materials, media, *scene);
     add_lights(d, media, *scene);

@@ -319,7 +319,10 @@ TEST(CameraFactory, ReadsPbrtParameters) {
     EXPECT_FALSE(create_camera("spherical", id, Vec2i{10, 10}, dict({}), loc)->models_importance());
     EXPECT_FALSE(create_camera("orthographic", id, Vec2i{10, 10}, dict({}), loc)->models_importance());
     set_warnings_enabled(true);
-    EXPECT_FLOAT_EQ(camera_exposure_time(dict({float_param("shutterclose", {0.25})}), loc), 0.25f);
+    const Shutter shutter = camera_shutter(dict({float_param("shutteropen", {0.5}), float_param("shutterclose", {0.75})}), loc);
+    EXPECT_FLOAT_EQ(shutter.open, 0.5f);
+    EXPECT_FLOAT_EQ(shutter.close, 0.75f);
+    EXPECT_FLOAT_EQ(shutter.time(0.5f), 0.625f);
 }
 
 TEST(CameraFactory, RejectsBadInput) {
@@ -334,5 +337,5 @@ TEST(CameraFactory, RejectsBadInput) {
     EXPECT_THROW(create_camera("perspective", id, Vec2i{10, 10},
                                dict({float_param("lensradius", {-0.1})}), loc),
                  InputError);
-    EXPECT_THROW(camera_exposure_time(dict({float_param("shutteropen", {2})}), loc), InputError);
+    EXPECT_THROW(camera_shutter(dict({float_param("shutteropen", {2})}), loc), InputError);
 }

@@ -133,19 +133,48 @@ TEST(ParserTransforms, TransformBeginEndIsAcceptedWithAWarning) {
     EXPECT_NE(d.warnings[0].find("deprecated"), std::string::npos);
 }
 
-TEST(ParserTransforms, ActiveTransformKeepsOnlyTheStartTransform) {
+// pbrt-v4's ActiveTransform: each transform directive changes the start transform, the end
+// transform, or both, as the last ActiveTransform chose.
+TEST(ParserTransforms, ActiveTransformChoosesWhichEndMoves) {
     SceneDescription d = parse("WorldBegin\nActiveTransform EndTime\nTranslate 9 9 9\n"
                                "ActiveTransform StartTime\nTranslate 1 0 0\n"
-                               "ActiveTransform All\nTranslate 0 1 0\nShape \"sphere\"\n");
+                               "ActiveTransform All\nTranslate 0 1 0\nShape \"sphere\"\n"
+                               "Shape \"disk\"\n");
     expect_near(d.shapes[0].render_from_object.apply_point({0, 0, 0}), {1, 1, 0});
-    ASSERT_EQ(d.warnings.size(), 1u);
-    EXPECT_NE(d.warnings[0].find("motion blur"), std::string::npos);
+    ASSERT_TRUE(d.shapes[0].render_from_object_end);
+    expect_near(d.shapes[0].render_from_object_end->apply_point({0, 0, 0}), {9, 10, 9});
+    EXPECT_TRUE(d.warnings.empty());
+    d = parse("WorldBegin\nTranslate 1 0 0\nShape \"sphere\"\n");
+    EXPECT_FALSE(d.shapes[0].render_from_object_end); // still
 }
 
-TEST(ParserTransforms, TransformTimesWarns) {
-    SceneDescription d = parse("TransformTimes 0 1\nWorldBegin\n");
-    ASSERT_EQ(d.warnings.size(), 1u);
-    EXPECT_NE(d.warnings[0].find("motion blur"), std::string::npos);
+TEST(ParserTransforms, TransformTimesAndMovingInstances) {
+    SceneDescription d = parse("TransformTimes 0.25 2\nWorldBegin\nObjectBegin \"o\"\nShape \"sphere\"\n"
+                               "ObjectEnd\nActiveTransform EndTime\nTranslate 0 0 3\nObjectInstance \"o\"\n");
+    EXPECT_FLOAT_EQ(d.transform_times.start, 0.25f);
+    EXPECT_FLOAT_EQ(d.transform_times.end, 2.f);
+    ASSERT_EQ(d.instance_uses.size(), 1u);
+    EXPECT_TRUE(d.instance_uses[0].render_from_instance.is_animated());
+    expect_near(d.instance_uses[0].render_from_instance.end.apply_point({0, 0, 0}), {0, 0, 3});
+    EXPECT_FLOAT_EQ(d.transform_times.fraction(1.125f), 0.5f);
+    EXPECT_FLOAT_EQ(d.transform_times.fraction(3.f), 1.f); // at rest after the end
+}
+
+TEST(ParserTransforms, MotionThatPbrtV4DoesNotSupport) {
+    // Moving lights, cameras and media warn and use the start, as pbrt-v4 does; a moving area
+    // light is an error at its shape, as in pbrt-v4.
+    SceneDescription d = parse("ActiveTransform EndTime\nTranslate 0 0 1\nCamera \"perspective\"\n"
+                               "WorldBegin\nActiveTransform EndTime\nTranslate 1 0 0\n"
+                               "LightSource \"point\"\n");
+    ASSERT_EQ(d.warnings.size(), 2u);
+    EXPECT_NE(d.warnings[0].find("camera cannot move"), std::string::npos);
+    EXPECT_NE(d.warnings[1].find("light cannot move"), std::string::npos);
+    std::string message = test::parse_error("WorldBegin\nActiveTransform EndTime\nTranslate 1 0 0\n"
+                                            "AreaLightSource \"diffuse\"\nShape \"sphere\"\n").what();
+    EXPECT_NE(message.find("test.pbrt:5:1"), std::string::npos) << message;
+    EXPECT_NE(message.find("area light cannot move"), std::string::npos) << message;
+    message = test::parse_error("TransformTimes 1 0\n").what();
+    EXPECT_NE(message.find("test.pbrt:1:1"), std::string::npos) << message;
 }
 
 TEST(ParserTransforms, LightsTexturesMediaAndInstancesGetTheCtm) {
@@ -165,7 +194,7 @@ TEST(ParserTransforms, LightsTexturesMediaAndInstancesGetTheCtm) {
     // Shapes in a definition keep their full CTM; ObjectEnd restores the CTM of ObjectBegin.
     expect_near(d.instances[0].shapes[0].render_from_object.apply_point({0, 0, 0}), {1, 0, 2});
     ASSERT_EQ(d.instance_uses.size(), 1u);
-    expect_near(d.instance_uses[0].render_from_instance.apply_point({1, 1, 1}), {2, 2, 4});
+    expect_near(d.instance_uses[0].render_from_instance.start.apply_point({1, 1, 1}), {2, 2, 4});
 }
 
 } // namespace
