@@ -65,7 +65,7 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Vec2f u1, Vec2f u2,
     w = Frame::from_z(ss->n).from_local(w);
     LightLeSample s;
     s.L = L(ss->p, ss->n, ss->uv, w, lambda);
-    s.ray = spawn_ray(ss->p, ss->n, w, 0);
+    s.ray = spawn_ray(ss->p, ss->n, w, 0); // the light path's time is set where it starts
     s.n = ss->n;
     s.pdf_pos = ss->pdf;
     s.pdf_dir = pdf_dir;
