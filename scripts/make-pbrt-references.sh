@@ -53,7 +53,8 @@ media/cloud 8192
 media/emissive 8192
 media/plume-spot 8192
 media/fog-caustic-grid 16384
-motion/moving-sphere 4096"
+motion/moving-sphere 4096
+motion/moving-camera 4096"
 
 want=("$@")
 while read -r scene spp; do

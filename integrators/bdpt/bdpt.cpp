@@ -141,6 +141,7 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
     PathVertex &lens = start_vertex(path[0]);
     lens.type = PathVertexType::Camera;
     lens.si.p = camera_ray.ray.o;
+    lens.si.time = camera_ray.ray.time;
     lens.medium = ctx.scene.camera_medium;
     lens.beta = camera_ray.weight;
     float pdf_pos, pdf_dir;
@@ -222,11 +223,12 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         // where that direction images.
         const PathVertex &qs = light_vertices[s - 1];
         if (!qs.connectible() || qs.at_infinity) return c;
-        auto cs = scene.camera->sample_wi(qs.p(), sampler.get_2d(), ctx.lambda);
+        auto cs = scene.camera->sample_wi(qs.p(), sampler.get_2d(), ctx.lambda, ctx.time);
         if (!cs || !(cs->pdf > 0)) return c;
         sampled = PathVertex{};
         sampled.type = PathVertexType::Camera;
         sampled.si.p = cs->p_lens;
+        sampled.si.time = ctx.time;
         sampled.medium = scene.camera_medium;
         sampled.beta = cs->We / cs->pdf;
         if (qs.type == PathVertexType::Light) {

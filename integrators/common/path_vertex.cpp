@@ -56,7 +56,7 @@ float PathVertex::pdf(const Scene &scene, const PathVertex *prev, const PathVert
     float pdf = 0;
     if (type == PathVertexType::Camera) {
         float pdf_pos;
-        scene.camera->pdf_we(Ray{p(), wn, Infinity}, &pdf_pos, &pdf);
+        scene.camera->pdf_we(Ray{p(), wn, Infinity, si.time}, &pdf_pos, &pdf);
     } else {
         // Back across a jump: the reverse jump's density (see after_jump).
         if (after_jump && &next == this - 1) return 1;

@@ -57,7 +57,7 @@ void connect_light_vertex(const LightPathContext &ctx, const Light &light, const
     // visible. It carries no uv either; Caustica's area lights emit uniformly over their shape,
     // so L does not depend on it.
     const Vec3f p = les.ray.o;
-    auto cs = scene.camera->sample_wi(p, ctx.sample.sampler.get_2d(), lambda);
+    auto cs = scene.camera->sample_wi(p, ctx.sample.sampler.get_2d(), lambda, les.ray.time);
     if (!cs || !(cs->pdf > 0)) return;
     SampledSpectrum Le = light.L(p, les.n, Vec2f{}, cs->wi, lambda);
     if (Le.is_black()) return;
@@ -77,7 +77,7 @@ void connect_light_vertex(const LightPathContext &ctx, const Light &light, const
 // (t = 1) and splats the result.
 void connect_to_lens(const LightPathContext &ctx, const ScatteringPoint &point, const SampledSpectrum &throughput,
                      const SampledWavelengths &lambda) {
-    auto cs = ctx.scene.camera->sample_wi(point.p, ctx.sample.sampler.get_2d(), lambda);
+    auto cs = ctx.scene.camera->sample_wi(point.p, ctx.sample.sampler.get_2d(), lambda, point.time);
     if (!cs || !(cs->pdf > 0)) return;
     SampledSpectrum f = point.f(cs->wi, TransportMode::Importance);
     if (f.is_black()) return;

@@ -168,7 +168,7 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
                        const SampledWavelengths &lambda, Vec2f u_lens) {
     const Scene &scene = ctx.it.scene;
     const ScatteringPoint &point = v.point;
-    auto cs = scene.camera->sample_wi(point.p, u_lens, lambda);
+    auto cs = scene.camera->sample_wi(point.p, u_lens, lambda, point.time);
     if (!cs || !(cs->pdf > 0)) return;
     SampledSpectrum f = point.f(cs->wi, TransportMode::Importance);
     if (f.is_black()) return;
@@ -177,7 +177,7 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
     // is sampled by both strategies, so the lens density cancels), per pixel of the full frame,
     // converted to the area measure here.
     float pdf_lens, pdf_dir;
-    scene.camera->pdf_we(Ray{cs->p_lens, -cs->wi, Infinity}, &pdf_lens, &pdf_dir);
+    scene.camera->pdf_we(Ray{cs->p_lens, -cs->wi, Infinity, point.time}, &pdf_lens, &pdf_dir);
     const float dist2 = length_squared(cs->p_lens - point.p);
     const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * point.cosine(cs->wi) / dist2;
     const float bsdf_rev_pdf = v.after_jump ? 1.f : point.pdf(cs->wi, point.wo, TransportMode::Radiance);

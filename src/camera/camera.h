@@ -2,6 +2,7 @@
 // densities needed to connect light-path vertices to the lens (Veach 1997 ch. 10; pbrt-v4 16.1).
 #pragma once
 
+#include "core/animated_transform.h"
 #include "core/transform.h"
 #include "geometry/ray.h"
 #include "spectral/sampled_wavelengths.h"
@@ -60,28 +61,51 @@ struct FilmExtent {
 class Camera {
   public:
     virtual ~Camera() = default;
-    // The ray for a film and lens sample, leaving at the sample's time. The camera itself does
-    // not move: a moving camera renders from its start transform, with a warning (parser.cpp).
-    std::optional<CameraRay> generate_ray(const CameraSample &sample, const SampledWavelengths &lambda) const {
-        std::optional<CameraRay> r = ray_at_rest(sample, lambda);
-        if (r) r->ray.time = sample.time;
-        return r;
-    }
-    virtual std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
-                                                 const SampledWavelengths &lambda) const = 0;
+
+    // Every query takes the time of its ray (geometry/ray.h). A moving camera (pbrt-v4's
+    // animated CameraTransform: set_motion) does everything at rest, in its placement at the
+    // start, and moves the result to where it is at that time. The move is rigid (a motion that
+    // changes the camera's scale is refused by set_motion), so importance and densities do not
+    // change with it.
+
+    // The ray for a film and lens sample, leaving at the sample's time.
+    std::optional<CameraRay> generate_ray(const CameraSample &sample, const SampledWavelengths &lambda) const;
     // Importance of a ray leaving the lens; *p_raster receives its film position. Zero when
     // the ray misses the film.
-    virtual SampledSpectrum We(const Ray &ray, const SampledWavelengths &lambda,
-                               Vec2f *p_raster = nullptr) const = 0;
-    virtual void pdf_we(const Ray &ray, float *pdf_pos, float *pdf_dir) const = 0;
-    virtual std::optional<CameraWiSample> sample_wi(Vec3f ref, Vec2f u,
-                                                    const SampledWavelengths &lambda) const = 0;
+    SampledSpectrum We(const Ray &ray, const SampledWavelengths &lambda, Vec2f *p_raster = nullptr) const;
+    void pdf_we(const Ray &ray, float *pdf_pos, float *pdf_dir) const;
+    // A lens point seen from ref at the given time.
+    std::optional<CameraWiSample> sample_wi(Vec3f ref, Vec2f u, const SampledWavelengths &lambda,
+                                            float time = 0) const;
+    // Where the camera is at rest.
     virtual Vec3f position() const = 0;
     // False when the camera's importance is not modelled (the orthographic camera, whose
     // pinhole importance is a Dirac delta in direction, as in pbrt-v4): We and pdf_we are then
     // zero and sample_wi empty, so integrators that connect light paths to the lens must refuse
     // such a camera rather than silently lose those paths.
     virtual bool models_importance() const { return true; }
+
+    // The camera moves from world_from_camera.start (where it was built) to .end over the
+    // TransformTimes. Returns false, and leaves the camera still, when the motion is not rigid.
+    bool set_motion(const AnimatedTransform &world_from_camera, TransformTimes times);
+    bool moves() const { return motion_.is_animated(); }
+
+    // The same at rest: what each camera implements.
+    virtual std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
+                                                 const SampledWavelengths &lambda) const = 0;
+    virtual SampledSpectrum we_at_rest(const Ray &ray, const SampledWavelengths &lambda,
+                                       Vec2f *p_raster = nullptr) const = 0;
+    virtual void pdf_we_at_rest(const Ray &ray, float *pdf_pos, float *pdf_dir) const = 0;
+    virtual std::optional<CameraWiSample> sample_wi_at_rest(Vec3f ref, Vec2f u,
+                                                            const SampledWavelengths &lambda) const = 0;
+
+  private:
+    // The move from rest to the placement at `time` (identity when still).
+    Transform moved_at(float time) const;
+
+    AnimatedTransform motion_;       // world from camera, start and end
+    Transform rest_from_world_;      // the inverse of motion_.start
+    TransformTimes times_;
 };
 
 // A camera whose importance is not modelled (pbrt-v4 leaves it unimplemented for the same
@@ -89,11 +113,11 @@ class Camera {
 // paths to the lens refuse it.
 class CameraWithoutImportance : public Camera {
   public:
-    SampledSpectrum We(const Ray &, const SampledWavelengths &, Vec2f * = nullptr) const override {
+    SampledSpectrum we_at_rest(const Ray &, const SampledWavelengths &, Vec2f * = nullptr) const override {
         return SampledSpectrum(0.f);
     }
-    void pdf_we(const Ray &, float *pdf_pos, float *pdf_dir) const override { *pdf_pos = *pdf_dir = 0; }
-    std::optional<CameraWiSample> sample_wi(Vec3f, Vec2f, const SampledWavelengths &) const override {
+    void pdf_we_at_rest(const Ray &, float *pdf_pos, float *pdf_dir) const override { *pdf_pos = *pdf_dir = 0; }
+    std::optional<CameraWiSample> sample_wi_at_rest(Vec3f, Vec2f, const SampledWavelengths &) const override {
         return std::nullopt;
     }
     bool models_importance() const override { return false; }

@@ -42,7 +42,7 @@ ProjectiveParameters read_projective(const ParameterDictionary &params, Vec2i re
     return p;
 }
 
-CameraPtr create_perspective(const Transform &world_from_camera, const FilmExtent &film,
+std::shared_ptr<Camera> create_perspective(const Transform &world_from_camera, const FilmExtent &film,
                              const ParameterDictionary &params) {
     ProjectiveParameters p = read_projective(params, film.full_resolution);
     float fov = params.get_one_float("fov", 90);
@@ -54,7 +54,7 @@ CameraPtr create_perspective(const Transform &world_from_camera, const FilmExten
 
 // pbrt-v4's "realistic" camera: "lensfile" (required), "aperturediameter" (mm, default 1),
 // "focusdistance" (m from the film, default 10), "aperture" (a built-in shape or an image file).
-CameraPtr create_realistic(const Transform &world_from_camera, const FilmExtent &film,
+std::shared_ptr<Camera> create_realistic(const Transform &world_from_camera, const FilmExtent &film,
                            const ParameterDictionary &params, const SourceLocation &loc) {
     const std::string lens_file = params.get_one_string("lensfile", "");
     if (lens_file.empty()) throw InputError(loc, "the \"realistic\" camera needs a lens description (\"lensfile\")");
@@ -105,9 +105,9 @@ CameraPtr create_realistic(const Transform &world_from_camera, const FilmExtent 
 
 } // namespace
 
-CameraPtr create_camera(const std::string &type, const Transform &world_from_camera,
-                        const FilmExtent &film, const ParameterDictionary &params,
-                        const SourceLocation &loc) {
+std::shared_ptr<Camera> create_still_camera(const std::string &type, const Transform &world_from_camera,
+                                            const FilmExtent &film, const ParameterDictionary &params,
+                                            const SourceLocation &loc) {
     if (film.full_resolution.x < 1 || film.full_resolution.y < 1)
         throw InputError(loc, "the film resolution must be positive");
     if (type == "perspective") return create_perspective(world_from_camera, film, params);
@@ -131,6 +131,15 @@ CameraPtr create_camera(const std::string &type, const Transform &world_from_cam
     }
     if (type == "realistic") return create_realistic(world_from_camera, film, params, loc);
     throw InputError(loc, "\"" + type + "\": unknown camera type");
+}
+
+CameraPtr create_camera(const std::string &type, const Transform &world_from_camera, const FilmExtent &film,
+                        const ParameterDictionary &params, const SourceLocation &loc, const CameraMotion *motion) {
+    std::shared_ptr<Camera> camera = create_still_camera(type, world_from_camera, film, params, loc);
+    if (motion && !camera->set_motion({world_from_camera, motion->world_from_camera_end}, motion->times))
+        warning(loc, "the camera's motion changes its scale, which Caustica does not support: the "
+                     "camera stays at its start transform");
+    return camera;
 }
 
 CameraPtr create_camera(const std::string &type, const Transform &world_from_camera,

@@ -15,9 +15,15 @@ namespace caustica {
 // "aperturediameter", "focusdistance", "aperture"), with pbrt-v4's parameters and defaults.
 // Unknown types and invalid values are InputErrors. `film` is the film's extent (Film::extent()):
 // importance and splats then cover exactly the pixels the filter reaches, as in pbrt-v4.
+// With `motion`, the camera moves from world_from_camera to motion's end placement over its
+// TransformTimes (Camera::set_motion; a motion that changes the camera's scale warns and stays).
+struct CameraMotion {
+    Transform world_from_camera_end;
+    TransformTimes times;
+};
 CameraPtr create_camera(const std::string &type, const Transform &world_from_camera,
                         const FilmExtent &film, const ParameterDictionary &params,
-                        const SourceLocation &loc);
+                        const SourceLocation &loc, const CameraMotion *motion = nullptr);
 
 // The same for an uncropped film whose splats reach only the pixel they land in (a box filter
 // of radius 0.5); prefer the FilmExtent overload when a Film exists.

@@ -29,15 +29,15 @@ std::optional<CameraRay> OrthographicCamera::ray_at_rest(const CameraSample &sam
     return cr;
 }
 
-SampledSpectrum OrthographicCamera::We(const Ray &, const SampledWavelengths &, Vec2f *) const {
+SampledSpectrum OrthographicCamera::we_at_rest(const Ray &, const SampledWavelengths &, Vec2f *) const {
     return SampledSpectrum(0.f);
 }
 
-void OrthographicCamera::pdf_we(const Ray &, float *pdf_pos, float *pdf_dir) const {
+void OrthographicCamera::pdf_we_at_rest(const Ray &, float *pdf_pos, float *pdf_dir) const {
     *pdf_pos = *pdf_dir = 0;
 }
 
-std::optional<CameraWiSample> OrthographicCamera::sample_wi(Vec3f, Vec2f,
+std::optional<CameraWiSample> OrthographicCamera::sample_wi_at_rest(Vec3f, Vec2f,
                                                             const SampledWavelengths &) const {
     return std::nullopt;
 }

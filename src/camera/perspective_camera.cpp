@@ -52,7 +52,7 @@ bool PerspectiveCamera::project(const Ray &ray, float *cos_theta, Vec2f *p_raste
     return inside_sample_bounds(*p_raster);
 }
 
-SampledSpectrum PerspectiveCamera::We(const Ray &ray, const SampledWavelengths &,
+SampledSpectrum PerspectiveCamera::we_at_rest(const Ray &ray, const SampledWavelengths &,
                                       Vec2f *p_raster) const {
     float cos_theta;
     Vec2f p;
@@ -64,7 +64,7 @@ SampledSpectrum PerspectiveCamera::We(const Ray &ray, const SampledWavelengths &
     return SampledSpectrum(1 / (image_area_ * lens_area() * sqr(sqr(cos_theta))));
 }
 
-void PerspectiveCamera::pdf_we(const Ray &ray, float *pdf_pos, float *pdf_dir) const {
+void PerspectiveCamera::pdf_we_at_rest(const Ray &ray, float *pdf_pos, float *pdf_dir) const {
     float cos_theta;
     Vec2f p;
     if (!project(ray, &cos_theta, &p)) {
@@ -75,7 +75,7 @@ void PerspectiveCamera::pdf_we(const Ray &ray, float *pdf_pos, float *pdf_dir) c
     *pdf_dir = 1 / (image_area_ * cos_theta * cos_theta * cos_theta);
 }
 
-std::optional<CameraWiSample> PerspectiveCamera::sample_wi(Vec3f ref, Vec2f u,
+std::optional<CameraWiSample> PerspectiveCamera::sample_wi_at_rest(Vec3f ref, Vec2f u,
                                                            const SampledWavelengths &lambda) const {
     Vec2f lens = sample_uniform_disk_concentric(u) * lens_radius_;
     Vec3f p_lens = world_from_camera_.apply_point({lens.x, lens.y, 0});
@@ -86,7 +86,7 @@ std::optional<CameraWiSample> PerspectiveCamera::sample_wi(Vec3f ref, Vec2f u,
     // Uniform density over the lens area, converted to solid angle at ref.
     float pdf = sqr(dist) / (abs_dot(forward_, wi) * lens_area());
     Vec2f p_raster;
-    SampledSpectrum importance = We(Ray{p_lens, -wi}, lambda, &p_raster);
+    SampledSpectrum importance = we_at_rest(Ray{p_lens, -wi}, lambda, &p_raster);
     if (importance.is_black() || !std::isfinite(pdf)) return std::nullopt;
     return CameraWiSample{importance, wi, pdf, p_raster, p_lens, forward_};
 }

@@ -18,10 +18,10 @@ class PerspectiveCamera final : public ProjectiveCamera {
 
     std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
                                           const SampledWavelengths &lambda) const override;
-    SampledSpectrum We(const Ray &ray, const SampledWavelengths &lambda,
+    SampledSpectrum we_at_rest(const Ray &ray, const SampledWavelengths &lambda,
                        Vec2f *p_raster = nullptr) const override;
-    void pdf_we(const Ray &ray, float *pdf_pos, float *pdf_dir) const override;
-    std::optional<CameraWiSample> sample_wi(Vec3f ref, Vec2f u,
+    void pdf_we_at_rest(const Ray &ray, float *pdf_pos, float *pdf_dir) const override;
+    std::optional<CameraWiSample> sample_wi_at_rest(Vec3f ref, Vec2f u,
                                             const SampledWavelengths &lambda) const override;
 
     // Area of the image on the plane z = 1 in camera space.

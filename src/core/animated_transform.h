@@ -1,12 +1,33 @@
-// pbrt-v4's AnimatedTransform: the placement of a shape or an object instance that moves from
-// `start` at the scene's first TransformTimes time to `end` at its second (ActiveTransform picks
-// which of the two a transform directive changes). Between the two the geometry interpolates
-// (geometry/embree_scene.h says how); before the first time and after the second it rests.
+// pbrt-v4's AnimatedTransform: the placement of a shape, an object instance or the camera that
+// moves from `start` at the scene's first TransformTimes time to `end` at its second
+// (ActiveTransform picks which of the two a transform directive changes). Before the first time
+// and after the second it rests at the nearer end.
+//
+// Between the ends a placement is interpolated through its factors m = T R S (AffineFactors):
+// the translation T and the upper-triangular scale-and-skew S linearly, the rotation R by
+// spherical linear interpolation (Shoemake 1985). These are the factors of Embree's quaternion
+// motion blur, which moves shapes and instances (geometry/embree_scene.h). pbrt-v4 factors S as
+// a symmetric matrix (a polar decomposition) instead; the two agree for every motion of
+// translations, rotations and uniform scales, and for non-uniform scales applied after the
+// rotation (nearest the object), and differ between the ends only when a non-uniform scale is
+// applied before a rotation that changes.
 #pragma once
 
 #include "core/transform.h"
+#include "core/vecmath.h"
 
 namespace caustica {
+
+// An affine map m = T R S: T the translation, R a proper rotation (a unit quaternion w + xi + yj
+// + zk) and S upper triangular, from the Gram-Schmidt QR factorisation of m's linear part. A
+// mirroring m has a negative s22 (a quaternion cannot reflect).
+struct AffineFactors {
+    Vec3f translation;
+    float w = 1, x = 0, y = 0, z = 0;
+    float s00 = 1, s01 = 0, s02 = 0, s11 = 1, s12 = 0, s22 = 1;
+};
+AffineFactors factor_affine(const Matrix4 &m);
+Matrix4 compose(const AffineFactors &factors);
 
 struct AnimatedTransform {
     Transform start, end;
@@ -16,6 +37,8 @@ struct AnimatedTransform {
     AnimatedTransform(const Transform &at_start, const Transform &at_end) : start(at_start), end(at_end) {}
 
     bool is_animated() const { return !(start == end); }
+    // The placement at `fraction` of the way from start to end (in [0, 1]).
+    Transform at(float fraction) const;
 };
 
 // The scene's TransformTimes: when `start` and `end` apply. pbrt-v4's defaults.

@@ -82,50 +82,15 @@ void transform_interaction(const Transform &render_from_instance, SurfaceInterac
                     render_from_instance.apply_vector(si->shading.dpdv));
 }
 
-// Embree's quaternion decomposition of an affine map m = T R S: T the translation, R a rotation
-// and S upper triangular, from the Gram-Schmidt QR factorisation of m's linear part. R is kept a
-// proper rotation (a quaternion cannot reflect), so a mirroring m has a negative scale_z.
+// Embree's quaternion decomposition of a placement: its factors T R S (core/animated_transform.h).
 RTCQuaternionDecomposition quaternion_decomposition(const Matrix4 &m) {
-    const Vec3f c0{m.m[0][0], m.m[1][0], m.m[2][0]}, c1{m.m[0][1], m.m[1][1], m.m[2][1]},
-        c2{m.m[0][2], m.m[1][2], m.m[2][2]};
-    const float s00 = length(c0);
-    const Vec3f q0 = c0 / s00;
-    const float s01 = dot(q0, c1);
-    const Vec3f u1 = c1 - q0 * s01;
-    const float s11 = length(u1);
-    const Vec3f q1 = u1 / s11;
-    const float s02 = dot(q0, c2), s12 = dot(q1, c2);
-    const Vec3f u2 = c2 - q0 * s02 - q1 * s12;
-    float s22 = length(u2);
-    Vec3f q2 = u2 / s22;
-    if (dot(cross(q0, q1), q2) < 0) {
-        q2 = -q2;
-        s22 = -s22;
-    }
-    // The quaternion of the rotation whose columns are q0, q1, q2 (Shoemake 1985), from the
-    // largest of its four components for accuracy.
-    const float r[3][3] = {{q0.x, q1.x, q2.x}, {q0.y, q1.y, q2.y}, {q0.z, q1.z, q2.z}};
-    const float trace = r[0][0] + r[1][1] + r[2][2];
-    float w, x, y, z;
-    if (trace > 0) {
-        const float s = 2 * std::sqrt(trace + 1);
-        w = s / 4, x = (r[2][1] - r[1][2]) / s, y = (r[0][2] - r[2][0]) / s, z = (r[1][0] - r[0][1]) / s;
-    } else if (r[0][0] > r[1][1] && r[0][0] > r[2][2]) {
-        const float s = 2 * std::sqrt(1 + r[0][0] - r[1][1] - r[2][2]);
-        w = (r[2][1] - r[1][2]) / s, x = s / 4, y = (r[0][1] + r[1][0]) / s, z = (r[0][2] + r[2][0]) / s;
-    } else if (r[1][1] > r[2][2]) {
-        const float s = 2 * std::sqrt(1 + r[1][1] - r[0][0] - r[2][2]);
-        w = (r[0][2] - r[2][0]) / s, x = (r[0][1] + r[1][0]) / s, y = s / 4, z = (r[1][2] + r[2][1]) / s;
-    } else {
-        const float s = 2 * std::sqrt(1 + r[2][2] - r[0][0] - r[1][1]);
-        w = (r[1][0] - r[0][1]) / s, x = (r[0][2] + r[2][0]) / s, y = (r[1][2] + r[2][1]) / s, z = s / 4;
-    }
+    const AffineFactors f = factor_affine(m);
     RTCQuaternionDecomposition qd;
     rtcInitQuaternionDecomposition(&qd);
-    rtcQuaternionDecompositionSetScale(&qd, s00, s11, s22);
-    rtcQuaternionDecompositionSetSkew(&qd, s01, s02, s12);
-    rtcQuaternionDecompositionSetQuaternion(&qd, w, x, y, z);
-    rtcQuaternionDecompositionSetTranslation(&qd, m.m[0][3], m.m[1][3], m.m[2][3]);
+    rtcQuaternionDecompositionSetScale(&qd, f.s00, f.s11, f.s22);
+    rtcQuaternionDecompositionSetSkew(&qd, f.s01, f.s02, f.s12);
+    rtcQuaternionDecompositionSetQuaternion(&qd, f.w, f.x, f.y, f.z);
+    rtcQuaternionDecompositionSetTranslation(&qd, f.translation.x, f.translation.y, f.translation.z);
     return qd;
 }
 

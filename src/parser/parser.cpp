@@ -559,9 +559,9 @@ class SceneParser {
     void camera(const Token &d) {
         SceneEntity e = entity(d, "camera type");
         require_options_block(d);
-        warn_if_moving(d, "the camera");
         Transform world_from_camera = state_.ctm.inverse();
         named_frames_["camera"] = {world_from_camera, state_.ctm_end.inverse()};
+        if (ctm_moves()) desc_.camera.world_from_camera_end = state_.ctm_end.inverse();
         desc_.camera.type = std::move(e.type);
         desc_.camera.params = std::move(e.params);
         desc_.camera.loc = e.loc;

@@ -36,6 +36,7 @@ struct TransformedEntity : SceneEntity {
 
 struct CameraEntity : SceneEntity {
     Transform world_from_camera;  // inverse of the CTM at the Camera directive
+    std::optional<Transform> world_from_camera_end; // the same at the end time, when it moves
     std::string medium;           // the outside medium of the MediumInterface in effect
 };
 

@@ -75,9 +75,10 @@ class Scene {
     // The medium around the camera (the outside medium in effect at the Camera directive).
     const Medium *camera_medium = nullptr;
     Shutter shutter;
-    // The shutter when some geometry moves during it (motion blur), else null: paths then draw
-    // a time, and without motion they draw none, so that still scenes keep their samples.
-    const Shutter *motion_shutter() const { return geometry.moves() ? &shutter : nullptr; }
+    // The shutter when the camera or some geometry moves during it (motion blur), else null:
+    // paths then draw a time, and without motion they draw none, so that still scenes keep
+    // their samples.
+    const Shutter *motion_shutter() const { return geometry.moves() || camera->moves() ? &shutter : nullptr; }
 
     std::string integrator_name;         // Caustica's name: "pt", "lt", ...
     std::string integrator_reason;       // why `auto` chose it (empty when it was named)

@@ -398,9 +398,11 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
                               scene->shutter.close - scene->shutter.open);
     scene->film->set_monochromatic(ov.wavelength > 0);
     scene->output_filename = scene->film->filename();
+    std::optional<CameraMotion> camera_motion;
+    if (d.camera.world_from_camera_end) camera_motion = CameraMotion{*d.camera.world_from_camera_end, d.transform_times};
     scene->camera = create_camera(d.camera.type.empty() ? "perspective" : d.camera.type,
                                   d.camera.world_from_camera, scene->film->extent(), d.camera.params,
-                                  d.camera.loc);
+                                  d.camera.loc, camera_motion ? &*camera_motion : nullptr);
     scene->camera_location = d.camera.loc;
     scene->sampler = d.sampler.type.empty()
                          ? create_default_sampler(int(ov.seed), ov.spp)

@@ -82,11 +82,6 @@ INSTANTIATE_TEST_SUITE_P(Integrators, PbrtHeterogeneousMedia,
                                            RenderCase{"media/fog-caustic-grid", "bdpt", 16},
                                            RenderCase{"media/fog-caustic-grid", "sppm", 2048},
                                            RenderCase{"media/fog-caustic-grid", "bpm", 1024}),
-                         [](const ::testing::TestParamInfo<RenderCase> &info) {
-                             std::string scene = info.param.scene;
-                             for (char &ch : scene)
-                                 if (ch == '-') ch = '_';
-                             return scene.substr(scene.find('/') + 1) + "_" + info.param.integrator;
-                         });
+                         [](const ::testing::TestParamInfo<RenderCase> &info) { return case_name(info.param); });
 
 } // namespace

@@ -38,12 +38,6 @@ INSTANTIATE_TEST_SUITE_P(Integrators, PbrtLights,
                                            RenderCase{"lights/portal-window", "sppm", 128},
                                            RenderCase{"lights/portal-window", "bpm", 512},
                                            RenderCase{"lights/portal-window", "vcm", 16}),
-                         [](const ::testing::TestParamInfo<RenderCase> &info) {
-                             const std::string scene = info.param.scene;
-                             std::string name = scene.substr(scene.find('/') + 1) + "_" + info.param.integrator;
-                             for (char &c : name)
-                                 if (c == '-') c = '_';
-                             return name;
-                         });
+                         [](const ::testing::TestParamInfo<RenderCase> &info) { return case_name(info.param); });
 
 } // namespace

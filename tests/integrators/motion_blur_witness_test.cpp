@@ -4,6 +4,9 @@
 // scenes/motion/moving-sphere.pbrt: a sphere sliding and an object instance spinning during the
 // shutter, with TransformTimes longer than the shutter, and their blurred shadows under a lamp
 // the camera does not see.
+// scenes/motion/moving-camera.pbrt: the camera turns and slides during a shutter that covers the
+// middle half of the TransformTimes, in front of still objects; lt, bdpt, bpm and vcm connect light
+// paths to the lens where the camera is at the path's time.
 // - pt, lt and bdpt draw a time per path (bdpt's light subpath takes its camera path's).
 // - sppm, bpm and vcm give every path of an iteration one time, stratified over the iterations
 //   (IterationRenderer::time), so that merges and connections join paths of one time.
@@ -15,11 +18,26 @@ using namespace caustica::testing;
 
 namespace {
 
-TEST(MotionBlur, PathTracerMatchesPbrtV4) { expect_agreement_with_pbrt("motion/moving-sphere", "pt", 256); }
-TEST(MotionBlur, LightTracerMatchesPbrtV4) { expect_agreement_with_pbrt("motion/moving-sphere", "lt", 256); }
-TEST(MotionBlur, BdptMatchesPbrtV4) { expect_agreement_with_pbrt("motion/moving-sphere", "bdpt", 128); }
-TEST(MotionBlur, SppmMatchesPbrtV4) { expect_agreement_with_pbrt("motion/moving-sphere", "sppm", 256); }
-TEST(MotionBlur, BpmMatchesPbrtV4) { expect_agreement_with_pbrt("motion/moving-sphere", "bpm", 256); }
-TEST(MotionBlur, VcmMatchesPbrtV4) { expect_agreement_with_pbrt("motion/moving-sphere", "vcm", 256); }
+class MotionBlur : public ::testing::TestWithParam<RenderCase> {};
+
+TEST_P(MotionBlur, MatchesPbrtV4) {
+    const RenderCase &c = GetParam();
+    expect_agreement_with_pbrt(c.scene, c.integrator, c.spp);
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, MotionBlur,
+                         ::testing::Values(RenderCase{"motion/moving-sphere", "pt", 256},
+                                           RenderCase{"motion/moving-sphere", "lt", 256},
+                                           RenderCase{"motion/moving-sphere", "bdpt", 128},
+                                           RenderCase{"motion/moving-sphere", "sppm", 256},
+                                           RenderCase{"motion/moving-sphere", "bpm", 256},
+                                           RenderCase{"motion/moving-sphere", "vcm", 256},
+                                           RenderCase{"motion/moving-camera", "pt", 256},
+                                           RenderCase{"motion/moving-camera", "lt", 256},
+                                           RenderCase{"motion/moving-camera", "bdpt", 128},
+                                           RenderCase{"motion/moving-camera", "sppm", 256},
+                                           RenderCase{"motion/moving-camera", "bpm", 256},
+                                           RenderCase{"motion/moving-camera", "vcm", 256}),
+                         [](const ::testing::TestParamInfo<RenderCase> &info) { return case_name(info.param); });
 
 } // namespace

@@ -167,9 +167,11 @@ struct RenderCase {
     int spp;
 };
 
-// A gtest name for a case: scene_integrator, with the scene's dashes made underscores.
+// A gtest name for a case: scene_integrator, without the scene's folder and with its dashes made
+// underscores.
 inline std::string case_name(const RenderCase &c) {
-    std::string name = std::string(c.scene) + "_" + c.integrator;
+    const std::string scene = c.scene;
+    std::string name = scene.substr(scene.find_last_of('/') + 1) + "_" + c.integrator;
     for (char &ch : name)
         if (ch == '-') ch = '_';
     return name;
