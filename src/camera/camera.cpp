@@ -15,6 +15,7 @@ bool Camera::set_motion(const AnimatedTransform &world_from_camera, TransformTim
     motion_ = world_from_camera;
     rest_from_world_ = world_from_camera.start.inverse();
     times_ = times;
+    moves_ = world_from_camera.is_animated();
     return true;
 }
 

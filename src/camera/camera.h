@@ -88,7 +88,7 @@ class Camera {
     // The camera moves from world_from_camera.start (where it was built) to .end over the
     // TransformTimes. Returns false, and leaves the camera still, when the motion is not rigid.
     bool set_motion(const AnimatedTransform &world_from_camera, TransformTimes times);
-    bool moves() const { return motion_.is_animated(); }
+    bool moves() const { return moves_; }
 
     // The same at rest: what each camera implements.
     virtual std::optional<CameraRay> ray_at_rest(const CameraSample &sample,
@@ -106,6 +106,7 @@ class Camera {
     AnimatedTransform motion_;       // world from camera, start and end
     Transform rest_from_world_;      // the inverse of motion_.start
     TransformTimes times_;
+    bool moves_ = false;
 };
 
 // A camera whose importance is not modelled (pbrt-v4 leaves it unimplemented for the same

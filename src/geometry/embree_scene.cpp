@@ -3,6 +3,7 @@
 #include "core/error.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -243,7 +244,7 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     rayhit.ray.dir_z = ray.d.z;
     rayhit.ray.tnear = 0;
     rayhit.ray.tfar = ray.t_max;
-    rayhit.ray.time = times_.fraction(ray.time);
+    rayhit.ray.time = moving_instances_ > 0 ? times_.fraction(ray.time) : 0.f;
     rayhit.ray.mask = ~0u;
     rayhit.ray.id = 0;
     rayhit.ray.flags = 0;
@@ -266,14 +267,17 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     // Shading data are computed where the shape lives and then moved to render space. The ray
     // parameter is the same in both spaces (the maps are affine).
     Ray local = ray;
-    Transform moved;
+    std::optional<Transform> moved, moved_back;
     const Transform *render_from_instance = nullptr;
     if (instance) {
-        if (instance->moving) moved = transform_at(*instance, rayhit.ray.time);
-        render_from_instance = instance->moving ? &moved : &instance->render_from_instance;
-        const Transform instance_from_render = instance->moving ? moved.inverse() : instance->instance_from_render;
-        local.o = instance_from_render.apply_point(ray.o);
-        local.d = instance_from_render.apply_vector(ray.d);
+        render_from_instance = &instance->render_from_instance;
+        const Transform *instance_from_render = &instance->instance_from_render;
+        if (instance->moving) {
+            render_from_instance = &moved.emplace(transform_at(*instance, rayhit.ray.time));
+            instance_from_render = &moved_back.emplace(moved->inverse());
+        }
+        local.o = instance_from_render->apply_point(ray.o);
+        local.d = instance_from_render->apply_vector(ray.d);
     }
     float t = rayhit.ray.tfar;
     unsigned index = rayhit.hit.primID;
@@ -313,7 +317,7 @@ bool GeometryScene::occluded(const Ray &ray) const {
     r.tnear = 0;
     // Embree's interval is closed; stop one float short of t_max to make it open.
     r.tfar = std::nextafter(ray.t_max, 0.f);
-    r.time = times_.fraction(ray.time);
+    r.time = moving_instances_ > 0 ? times_.fraction(ray.time) : 0.f;
     r.mask = ~0u;
     r.id = 0;
     r.flags = 0;
