@@ -38,6 +38,7 @@ hard/skin-lens 32768
 hard/coated-low-roughness 4096
 textures/noise-textures 256
 textures/bump-and-normal-map 256
+textures/alpha-cutouts 4096
 cameras/spherical-equirect 64
 cameras/spherical-equalarea 64
 cameras/realistic-dof 4096

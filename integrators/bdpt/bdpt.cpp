@@ -328,9 +328,15 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             const int n_camera = camera_subpath(ctx, *camera_ray, camera_vertices, max_depth + 2, &medium_emission);
             L += hero_only(medium_emission, lambda);
             const int n_light = light_subpath(ctx, light_vertices, max_depth + 1);
+            // s = 1 samples a light point of its own (next-event estimation), so it is tried
+            // even when the light subpath did not start (a light point under an alpha cut-out):
+            // the MIS weights of the other strategies count on it. With t = 1 it joins the
+            // light subpath's first vertex to the lens and needs one. (Its MIS weight puts its
+            // own light point in the first vertex's place, which must then hold a value.)
+            if (n_light == 0) light_vertices[0] = PathVertex{};
             for (int t = 1; t <= n_camera; ++t)
-                for (int s = 0; s <= n_light; ++s) {
-                    const int depth = s + t - 2 - camera_vertices[t - 1].jumps - (s > 0 ? light_vertices[s - 1].jumps : 0);
+                for (int s = 0; s <= std::max(n_light, t > 1 ? 1 : 0); ++s) {
+                    const int depth = s + t - 2 - camera_vertices[t - 1].jumps - (s > 1 ? light_vertices[s - 1].jumps : 0);
                     if (depth < 0 || depth > max_depth) continue;
                     Connection c = connect(ctx, light_vertices, camera_vertices, s, t);
                     if (c.L.is_black()) continue;

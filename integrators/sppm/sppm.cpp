@@ -103,7 +103,9 @@ struct VisiblePoint {
     int depth = 0;             // scattering vertices on the camera path before this one
     BSDF bsdf;                 // surface points, in the iteration's scratch memory
     const Medium *medium = nullptr; // points inside a participating medium
-    SampledSpectrum beta;      // camera path throughput up to the point
+    // The camera path's throughput up to the point, over the surface's coverage there: photons
+    // land on a partly transparent cut-out only that often (SurfaceInteraction::coverage).
+    SampledSpectrum beta;
     SampledWavelengths lambda; // the path's wavelengths (terminated if it crossed dispersion)
 
     bool exists() const { return bsdf || medium; }
@@ -143,7 +145,7 @@ void find_subsurface_visible_point(const Scene &scene, const SurfaceInteraction 
     L += beta * sample_direct_lighting(scene, at, exit->bsdf, LightSampleContext{at.p, at.n, at.shading.n}, lambda,
                                        sampler, ctx.rays, TransportMode::Radiance, DirectLighting::LightSamplingOnly,
                                        medium);
-    subsurface_vp = VisiblePoint{at.p, at.n, at.shading.n, at.wo, depth, exit->bsdf, nullptr, beta, lambda};
+    subsurface_vp = VisiblePoint{at.p, at.n, at.shading.n, at.wo, depth, exit->bsdf, nullptr, beta / at.coverage, lambda};
 }
 
 // Direct lighting and the visible points of one pixel's camera path.
@@ -241,7 +243,8 @@ void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const 
                                                                   : DirectLighting::WeightedAgainstBsdfSampling,
                                                     walk.medium());
         if (visible_point) {
-            state.vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, depth, bsdf, nullptr, walk.beta, lambda};
+            state.vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, depth, bsdf, nullptr, walk.beta / si.coverage,
+                                    lambda};
             if (si.material->has_profile_subsurface())
                 find_subsurface_visible_point(scene, si, bsdf, depth, walk.beta, lambda, walk.medium(), ctx, L,
                                               state.subsurface_vp);

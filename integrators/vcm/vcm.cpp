@@ -369,7 +369,9 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
 }
 
 // Gathers the photons of the camera vertex's wavelength group within the merge radius on its
-// surface (tech. report eqs. 42-43), normalised by pi r^2 times the group's light-path count.
+// surface (tech. report eqs. 42-43), normalised by pi r^2 times the group's light-path count,
+// and by the surface's coverage: light paths land on a partly transparent cut-out only that
+// often (SurfaceInteraction::coverage).
 SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVertex &z) {
     const ScatteringPoint &point = z.point;
     const MergeWeights &here = ctx.w.surface;
@@ -393,7 +395,7 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
     });
-    return sum * ctx.it.vm_normalization[ctx.group];
+    return sum * (ctx.it.vm_normalization[ctx.group] / point.coverage);
 }
 
 // Gathers the photons that the camera vertex's group deposited in media within a sphere of the

@@ -15,7 +15,12 @@ namespace caustica {
 class AnalyticShape : public Shape {
   public:
     // Ray parameter of the first hit with 0 < t < t_max.
-    virtual std::optional<float> intersect_t(Vec3f o, Vec3f d, float t_max) const = 0;
+    std::optional<float> intersect_t(Vec3f o, Vec3f d, float t_max) const {
+        return nth_hit(o, d, t_max, 0);
+    }
+    // Ray parameter of hit n (0: the first) with 0 < t < t_max, in increasing t. Rays see past
+    // an alpha cut-out to the next hit of the same shape (a sphere's far side) this way.
+    virtual std::optional<float> nth_hit(Vec3f o, Vec3f d, float t_max, int n) const = 0;
     // The surface record of the hit that intersect_t reported at ray parameter t. The point is
     // projected onto the exact surface rather than taken as o + t d, which robust spawning of
     // continuation rays depends on.

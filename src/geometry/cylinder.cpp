@@ -48,7 +48,7 @@ Vec2f Cylinder::uv_of(Vec3d p) const {
     return {float(phi / phi_max_), float((p.z - z_min_) / (z_max_ - z_min_))};
 }
 
-double Cylinder::hit_object(Vec3d o, Vec3d d, double t_max) const {
+double Cylinder::hit_object(Vec3d o, Vec3d d, double t_max, int n) const {
     // (o + t d)_xy on the circle: a t^2 + b t + c = 0.
     double a = d.x * d.x + d.y * d.y;
     if (a == 0) return -1; // along the axis
@@ -60,12 +60,12 @@ double Cylinder::hit_object(Vec3d o, Vec3d d, double t_max) const {
     double t0 = q / a, t1 = q != 0 ? c / q : t0;
     if (t0 > t1) std::swap(t0, t1);
     for (double t : {t0, t1})
-        if (t > 0 && t < t_max && on_surface(o + d * t)) return t;
+        if (t > 0 && t < t_max && on_surface(o + d * t) && n-- == 0) return t;
     return -1;
 }
 
-std::optional<float> Cylinder::intersect_t(Vec3f o_render, Vec3f d_render, float t_max) const {
-    double t = hit_object(object_point(o_render), object_vector(d_render), t_max);
+std::optional<float> Cylinder::nth_hit(Vec3f o_render, Vec3f d_render, float t_max, int n) const {
+    double t = hit_object(object_point(o_render), object_vector(d_render), t_max, n);
     if (!(t > 0)) return std::nullopt;
     float tf = float(t);
     if (!(tf > 0)) tf = std::nextafter(0.f, 1.f);

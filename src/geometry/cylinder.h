@@ -21,15 +21,16 @@ class Cylinder : public AnalyticShape {
     // The density of sample(ref, u) at the first point along wi.
     float pdf(Vec3f ref, Vec3f wi) const override;
 
-    std::optional<float> intersect_t(Vec3f o, Vec3f d, float t_max) const override;
+    std::optional<float> nth_hit(Vec3f o, Vec3f d, float t_max, int n) const override;
     SurfaceInteraction interaction(const Ray &ray, float t) const override;
 
   private:
     // Whether the object-space point (on the infinite cylinder) lies on the cut surface.
     bool on_surface(Vec3d p) const;
     Vec2f uv_of(Vec3d p) const;
-    // The object-space ray parameter of the first hit in (0, t_max), or a negative number.
-    double hit_object(Vec3d o, Vec3d d, double t_max) const;
+    // The object-space ray parameter of hit n (0: the first) in (0, t_max), or a negative
+    // number.
+    double hit_object(Vec3d o, Vec3d d, double t_max, int n = 0) const;
     double object_area() const { return radius_ * (z_max_ - z_min_) * phi_max_; }
 
     double radius_, z_min_, z_max_, phi_max_;

@@ -21,9 +21,9 @@ Bounds3f Disk::bounds() const {
     return render_bounds({-radius_, -radius_, height_}, {radius_, radius_, height_});
 }
 
-std::optional<float> Disk::intersect_t(Vec3f o_render, Vec3f d_render, float t_max) const {
+std::optional<float> Disk::nth_hit(Vec3f o_render, Vec3f d_render, float t_max, int n) const {
     Vec3d o = object_point(o_render), d = object_vector(d_render);
-    if (d.z == 0) return std::nullopt;
+    if (d.z == 0 || n > 0) return std::nullopt; // a plane is met once
     double t = (height_ - o.z) / d.z;
     if (!(t > 0) || !(t < t_max)) return std::nullopt;
     double x = o.x + t * d.x, y = o.y + t * d.y;

@@ -16,7 +16,7 @@ class Disk : public AnalyticShape {
     // Uniform by area (an affine map scales a plane's area by a constant factor).
     std::optional<ShapeSample> sample(Vec2f u) const override;
 
-    std::optional<float> intersect_t(Vec3f o, Vec3f d, float t_max) const override;
+    std::optional<float> nth_hit(Vec3f o, Vec3f d, float t_max, int n) const override;
     SurfaceInteraction interaction(const Ray &ray, float t) const override;
 
   private:

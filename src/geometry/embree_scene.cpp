@@ -9,6 +9,13 @@
 
 namespace caustica {
 
+// What Embree's callbacks read for one geometry: its shape, and its alpha mask (null if opaque).
+struct EmbreeCallbackData {
+    const TriangleMesh *mesh;
+    const AnalyticShape *analytic;
+    const AlphaMask *alpha;
+};
+
 namespace {
 
 // Embree reports errors through this callback; build steps then check rtcGetDeviceError.
@@ -16,11 +23,11 @@ void report_embree_error(void *, RTCError code, const char *message) {
     if (code != RTC_ERROR_NONE) warning(std::string("Embree: ") + (message ? message : "error"));
 }
 
-// User geometry callbacks for analytic shapes: our double-precision intersection code.
-const AnalyticShape *shape_of(void *user) { return static_cast<const AnalyticShape *>(user); }
+const EmbreeCallbackData &data_of(void *user) { return *static_cast<const EmbreeCallbackData *>(user); }
 
+// User geometry callbacks for analytic shapes: our double-precision intersection code.
 void analytic_bounds(const RTCBoundsFunctionArguments *args) {
-    Bounds3f b = shape_of(args->geometryUserPtr)->bounds();
+    Bounds3f b = data_of(args->geometryUserPtr).analytic->bounds();
     args->bounds_o->lower_x = b.lo.x;
     args->bounds_o->lower_y = b.lo.y;
     args->bounds_o->lower_z = b.lo.z;
@@ -36,17 +43,40 @@ Vec3f ray_direction(RTCRayN *rays, unsigned n, unsigned i) {
     return {RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)};
 }
 
+// Whether the alpha mask lets the ray o + t d pass the surface record si of its hit at t.
+bool passes(const AlphaMask &alpha, Vec3f o, Vec3f d, float t, const SurfaceInteraction &si) {
+    return !alpha.stops(TextureEvalContext(si), AlphaMask::uniform(o.x, o.y, o.z, d.x, d.y, d.z, t));
+}
+
+// The first hit of an analytic shape in [t_near, t_far) that its alpha mask does not let pass.
+std::optional<float> analytic_hit(const EmbreeCallbackData &data, Vec3f o, Vec3f d, float t_near,
+                                  float t_far) {
+    for (int n = 0;; ++n) {
+        std::optional<float> t = data.analytic->nth_hit(o, d, t_far, n);
+        if (!t) return std::nullopt;
+        if (*t < t_near) continue;
+        if (data.alpha) {
+            Ray ray;
+            ray.o = o;
+            ray.d = d;
+            if (passes(*data.alpha, o, d, *t, data.analytic->interaction(ray, *t))) continue;
+        }
+        return t;
+    }
+}
+
 void analytic_intersect(const RTCIntersectFunctionNArguments *args) {
-    const AnalyticShape *shape = shape_of(args->geometryUserPtr);
+    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
     RTCRayN *rays = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN *hits = RTCRayHitN_HitN(args->rayhit, args->N);
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
         // The ray arrives in the space the geometry lives in (an instance's, if instanced).
-        std::optional<float> t = shape->intersect_t(ray_origin(rays, args->N, i),
-                                                    ray_direction(rays, args->N, i),
-                                                    RTCRayN_tfar(rays, args->N, i));
-        if (!t || *t < RTCRayN_tnear(rays, args->N, i)) continue;
+        std::optional<float> t = analytic_hit(data, ray_origin(rays, args->N, i),
+                                              ray_direction(rays, args->N, i),
+                                              RTCRayN_tnear(rays, args->N, i),
+                                              RTCRayN_tfar(rays, args->N, i));
+        if (!t) continue;
         RTCRayN_tfar(rays, args->N, i) = *t;
         RTCHitN_Ng_x(hits, args->N, i) = 0;
         RTCHitN_Ng_y(hits, args->N, i) = 0;
@@ -61,14 +91,28 @@ void analytic_intersect(const RTCIntersectFunctionNArguments *args) {
 }
 
 void analytic_occluded(const RTCOccludedFunctionNArguments *args) {
-    const AnalyticShape *shape = shape_of(args->geometryUserPtr);
+    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
-        std::optional<float> t = shape->intersect_t(ray_origin(args->ray, args->N, i),
-                                                    ray_direction(args->ray, args->N, i),
-                                                    RTCRayN_tfar(args->ray, args->N, i));
-        if (t && *t >= RTCRayN_tnear(args->ray, args->N, i))
+        if (analytic_hit(data, ray_origin(args->ray, args->N, i), ray_direction(args->ray, args->N, i),
+                         RTCRayN_tnear(args->ray, args->N, i), RTCRayN_tfar(args->ray, args->N, i)))
             RTCRayN_tfar(args->ray, args->N, i) = -Infinity; // Embree's "occluded" mark
+    }
+}
+
+// Embree's intersection and occlusion filter for a cut-out mesh: drops each candidate hit that
+// the alpha mask lets the ray pass. Embree gives the candidate's distance as the ray's tfar.
+void mesh_alpha_filter(const RTCFilterFunctionNArguments *args) {
+    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+        const float b[3] = {std::max(0.f, 1 - u - v), u, v};
+        SurfaceInteraction si;
+        data.mesh->interaction(int(RTCHitN_primID(args->hit, args->N, i)), b, &si);
+        if (passes(*data.alpha, ray_origin(args->ray, args->N, i), ray_direction(args->ray, args->N, i),
+                   RTCRayN_tfar(args->ray, args->N, i), si))
+            args->valid[i] = 0;
     }
 }
 
@@ -125,7 +169,11 @@ void GeometryScene::check_device(const char *what) const {
                                  std::to_string(int(error)) + ")");
 }
 
-void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group) {
+void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group,
+                           const AlphaMask *alpha) {
+    callback_data_.push_back(std::make_unique<EmbreeCallbackData>(
+        EmbreeCallbackData{group.mesh.get(), group.analytic.get(), alpha}));
+    void *callback_data = const_cast<EmbreeCallbackData *>(callback_data_.back().get());
     RTCGeometry geometry;
     if (group.mesh) {
         const TriangleMesh &mesh = *group.mesh;
@@ -136,10 +184,15 @@ void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGrou
                                    mesh.indices().data(), 0, 3 * sizeof(int),
                                    mesh.triangle_count());
         triangle_count_ += mesh.triangle_count();
+        if (alpha) {
+            rtcSetGeometryUserData(geometry, callback_data);
+            rtcSetGeometryIntersectFilterFunction(geometry, mesh_alpha_filter);
+            rtcSetGeometryOccludedFilterFunction(geometry, mesh_alpha_filter);
+        }
     } else {
         geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(geometry, 1);
-        rtcSetGeometryUserData(geometry, group.analytic.get());
+        rtcSetGeometryUserData(geometry, callback_data);
         rtcSetGeometryBoundsFunction(geometry, analytic_bounds, nullptr);
         rtcSetGeometryIntersectFunction(geometry, analytic_intersect);
         rtcSetGeometryOccludedFunction(geometry, analytic_occluded);
@@ -155,7 +208,7 @@ void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGrou
 void GeometryScene::add(std::shared_ptr<const ShapeGroup> group, PrimitiveAttributes attributes) {
     if (committed_) throw std::logic_error("GeometryScene::add after commit");
     if (!group || (!group->mesh && !group->analytic)) return;
-    attach(scene_, unsigned(slots_.size()), *group);
+    attach(scene_, unsigned(slots_.size()), *group, attributes.alpha.get());
     slots_.push_back({Primitive{std::move(group), std::move(attributes)}, -1});
 }
 
@@ -165,7 +218,7 @@ int GeometryScene::add_prototype(
     Prototype prototype{new_scene(), {}};
     for (auto &[group, attributes] : shapes) {
         if (!group || (!group->mesh && !group->analytic)) continue;
-        attach(prototype.scene, unsigned(prototype.primitives.size()), *group);
+        attach(prototype.scene, unsigned(prototype.primitives.size()), *group, attributes.alpha.get());
         prototype.primitives.push_back({std::move(group), std::move(attributes)});
     }
     // Instanced scenes must be committed before the scenes that instance them.
@@ -291,6 +344,9 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     } else {
         *si = group.analytic->interaction(local, t);
     }
+    // The mask is evaluated where the filter evaluated it, before the move to render space.
+    const AlphaMask *alpha = primitive->attributes.alpha.get();
+    si->coverage = alpha ? alpha->coverage(TextureEvalContext(*si)) : 1.f;
     if (render_from_instance) transform_interaction(*render_from_instance, si);
 
     si->wo = -normalize(ray.d);

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "core/animated_transform.h"
+#include "geometry/alpha_mask.h"
 #include "geometry/interaction.h"
 #include "geometry/shape_group.h"
 
@@ -24,6 +25,7 @@
 namespace caustica {
 
 class Material;
+struct EmbreeCallbackData;
 class Light;
 struct MediumInterface;
 
@@ -33,6 +35,8 @@ struct PrimitiveAttributes {
     const MediumInterface *medium_interface = nullptr;
     // Empty, or one per primitive of the group (ShapeGroup::shapes() order).
     std::vector<const Light *> area_lights;
+    // Null for an opaque shape; rays pass where the mask lets them (alpha_mask.h).
+    std::shared_ptr<const AlphaMask> alpha;
 };
 
 class GeometryScene {
@@ -92,7 +96,7 @@ class GeometryScene {
     };
 
     // Attaches the group's Embree geometry to scene with ID geometry_id.
-    void attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group);
+    void attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group, const AlphaMask *alpha);
     RTCScene new_scene() const;
     void check_device(const char *what) const;
     // The placement of a moving instance at Embree time u in [0, 1].
@@ -103,6 +107,8 @@ class GeometryScene {
     std::vector<Slot> slots_;
     std::vector<Prototype> prototypes_;
     std::vector<Instance> instances_;
+    // What Embree's callbacks read for each geometry (embree_scene.cpp).
+    std::vector<std::unique_ptr<const EmbreeCallbackData>> callback_data_;
     size_t shape_count_ = 0, triangle_count_ = 0, moving_instances_ = 0;
     TransformTimes times_;
     bool committed_ = false;

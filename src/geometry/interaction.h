@@ -24,6 +24,10 @@ struct SurfaceInteraction {
     float t = 0;    // ray parameter of the hit
     float time = 0; // the ray's time (geometry/ray.h), which rays spawned here keep
     int face_index = 0;
+    // The fraction of the surface that is there around the hit: the alpha of a partly
+    // transparent cut-out (alpha_mask.h), 1 elsewhere. Rays meet such a surface only that often,
+    // so photon density estimates here are divided by it.
+    float coverage = 1;
 
     const Material *material = nullptr;      // null: a boundary between media only
     const Light *area_light = nullptr;       // emitter attached to this primitive, if any

@@ -61,7 +61,7 @@ Vec2f Sphere::uv_of(Vec3d p) const {
     return {float(phi / phi_max_), float((theta - theta_z_min_) / (theta_z_max_ - theta_z_min_))};
 }
 
-std::optional<double> Sphere::hit_object(Vec3d o, Vec3d d, double t_max, Vec3d *p_hit) const {
+std::optional<double> Sphere::hit_object(Vec3d o, Vec3d d, double t_max, Vec3d *p_hit, int n) const {
     double a = length_squared(d);
     if (!(a > 0)) return std::nullopt;
     double b = 2 * dot(d, o);
@@ -86,14 +86,15 @@ std::optional<double> Sphere::hit_object(Vec3d o, Vec3d d, double t_max, Vec3d *
                 phi > phi_max_)
                 continue;
         }
+        if (n-- > 0) continue;
         if (p_hit) *p_hit = p;
         return t;
     }
     return std::nullopt;
 }
 
-std::optional<float> Sphere::intersect_t(Vec3f o, Vec3f d, float t_max) const {
-    std::optional<double> t = hit_object(object_point(o), object_vector(d), t_max, nullptr);
+std::optional<float> Sphere::nth_hit(Vec3f o, Vec3f d, float t_max, int n) const {
+    std::optional<double> t = hit_object(object_point(o), object_vector(d), t_max, nullptr, n);
     if (!t) return std::nullopt;
     float tf = float(*t);
     // Rounding to float must keep the hit inside the open interval.

@@ -25,12 +25,13 @@ class Sphere : public AnalyticShape {
     std::optional<ShapeSample> sample(Vec3f ref, Vec2f u) const override;
     float pdf(Vec3f ref, Vec3f wi) const override;
 
-    std::optional<float> intersect_t(Vec3f o, Vec3f d, float t_max) const override;
+    std::optional<float> nth_hit(Vec3f o, Vec3f d, float t_max, int n) const override;
     SurfaceInteraction interaction(const Ray &ray, float t) const override;
 
   private:
-    // First object-space hit with 0 < t < t_max (object point projected onto the sphere).
-    std::optional<double> hit_object(Vec3d o, Vec3d d, double t_max, Vec3d *p_hit) const;
+    // Object-space hit n (0: the first) with 0 < t < t_max (object point projected onto the
+    // sphere).
+    std::optional<double> hit_object(Vec3d o, Vec3d d, double t_max, Vec3d *p_hit, int n = 0) const;
     Vec3d project_to_surface(Vec3d p) const;
     Vec2f uv_of(Vec3d p_object) const;
     bool uses_cone_sampling(Vec3d ref_object) const;

@@ -5,8 +5,9 @@
 namespace caustica {
 
 DiffuseAreaLight::DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumPtr radiance,
-                                   float scale, bool two_sided)
+                                   float scale, bool two_sided, std::shared_ptr<const AlphaMask> alpha)
     : shape_(std::move(shape)),
+      alpha_(std::move(alpha)),
       area_(shape_->area()),
       radiance_(std::move(radiance)),
       scale_(scale),
@@ -17,6 +18,18 @@ SampledSpectrum DiffuseAreaLight::phi(const SampledWavelengths &lambda) const {
     return Pi * (two_sided_ ? 2.f : 1.f) * area_ * scale_ * radiance_->sample(lambda);
 }
 
+bool DiffuseAreaLight::masked(const ShapeSample &s) const {
+    if (!alpha_) return false;
+    TextureEvalContext ctx;
+    ctx.p = s.p;
+    ctx.n = s.n;
+    ctx.uv = s.uv;
+    return !alpha_->stops(ctx, AlphaMask::uniform(s.p.x, s.p.y, s.p.z));
+}
+
+// Unlike pbrt-v4, L does not apply the mask again: a ray that reached the point has already met
+// it (GeometryScene), and a second, independent test would make a partly transparent emitter
+// appear with alpha^2 of its radiance to rays and alpha to light sampling.
 SampledSpectrum DiffuseAreaLight::L(Vec3f, Vec3f n, Vec2f, Vec3f w,
                                     const SampledWavelengths &lambda) const {
     if (!two_sided_ && dot(n, w) < 0) return {};
@@ -26,7 +39,7 @@ SampledSpectrum DiffuseAreaLight::L(Vec3f, Vec3f n, Vec2f, Vec3f w,
 std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContext &ctx, Vec2f u,
                                                          const SampledWavelengths &lambda) const {
     std::optional<ShapeSample> ss = shape_->sample(ctx.p, u);
-    if (!ss || !(ss->pdf > 0) || length_squared(ss->p - ctx.p) == 0) return {};
+    if (!ss || !(ss->pdf > 0) || length_squared(ss->p - ctx.p) == 0 || masked(*ss)) return {};
     Vec3f wi = normalize(ss->p - ctx.p);
     SampledSpectrum Le = L(ss->p, ss->n, ss->uv, -wi, lambda);
     if (Le.is_black()) return {};
@@ -46,7 +59,7 @@ float DiffuseAreaLight::pdf_li(const LightSampleContext &ctx, Vec3f wi) const {
 std::optional<LightLeSample> DiffuseAreaLight::sample_le(Vec2f u1, Vec2f u2,
                                                          const SampledWavelengths &lambda) const {
     std::optional<ShapeSample> ss = shape_->sample(u1);
-    if (!ss || !(ss->pdf > 0)) return {};
+    if (!ss || !(ss->pdf > 0) || masked(*ss)) return {};
     // Cosine-weighted direction about the normal; two-sided lights first pick a side with equal
     // probability, reusing u2.x rescaled to [0, 1).
     Vec3f w;

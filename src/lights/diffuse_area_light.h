@@ -1,7 +1,10 @@
 // Diffuse area light: constant radiance scale * L leaving every point of a shape, on the side of
-// its (oriented) normal, or on both sides when two-sided.
+// its (oriented) normal, or on both sides when two-sided. A shape with an alpha cut-out emits
+// only where it is there: points that the mask removes are never sampled as emitting, and rays
+// pass them without seeing their emission (geometry/alpha_mask.h).
 #pragma once
 
+#include "geometry/alpha_mask.h"
 #include "geometry/shape.h"
 #include "lights/light.h"
 #include "spectral/spectrum.h"
@@ -13,7 +16,7 @@ namespace caustica {
 class DiffuseAreaLight final : public Light {
   public:
     DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumPtr radiance, float scale,
-                     bool two_sided);
+                     bool two_sided, std::shared_ptr<const AlphaMask> alpha = nullptr);
 
     LightType type() const override { return LightType::Area; }
     const Spectrum *emission_spectrum() const override { return radiance_.get(); }
@@ -34,7 +37,12 @@ class DiffuseAreaLight final : public Light {
     bool two_sided() const { return two_sided_; }
 
   private:
+    // Whether the alpha mask removes the sampled point (decided by a hash of the point, as
+    // pbrt-v4 does).
+    bool masked(const ShapeSample &s) const;
+
     std::shared_ptr<const Shape> shape_;
+    std::shared_ptr<const AlphaMask> alpha_;
     float area_;
     SpectrumPtr radiance_;
     float scale_;

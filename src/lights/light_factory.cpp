@@ -260,7 +260,8 @@ LightPtr create_light(const std::string &type, const Transform &render_from_ligh
 
 std::vector<LightPtr> create_area_lights(const std::string &type, const ParameterDictionary &params,
                                          const std::vector<std::shared_ptr<Shape>> &shapes,
-                                         const SourceLocation &loc) {
+                                         const SourceLocation &loc,
+                                         std::shared_ptr<const AlphaMask> alpha) {
     if (type != "diffuse") throw InputError(loc, "unknown area light type \"" + type + "\"");
     SpectrumPtr L = light_spectrum(params, "L");
     float scale = photometric_scale(read_scale(params), *L);
@@ -279,7 +280,7 @@ std::vector<LightPtr> create_area_lights(const std::string &type, const Paramete
         float k_e = (two_sided ? 2 : 1) * shape->area() * Pi;
         if (power > 0 && k_e > 0) shape_scale *= power / k_e;
         lights.push_back(
-            std::make_shared<DiffuseAreaLight>(shape, radiance, shape_scale, two_sided));
+            std::make_shared<DiffuseAreaLight>(shape, radiance, shape_scale, two_sided, alpha));
     }
     params.report_unused();
     return lights;

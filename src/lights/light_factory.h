@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/transform.h"
+#include "geometry/alpha_mask.h"
 #include "geometry/shape.h"
 #include "lights/light.h"
 #include "params/parameters.h"
@@ -15,16 +16,17 @@
 
 namespace caustica {
 
-// "point", "spot", "distant" and "infinite" (uniform, or from an image: "filename"). Returns null
-// with a warning for pbrt-v4's "goniometric" and "projection", which Caustica does not support.
-// Throws InputError for unknown types and bad parameters (at the parameter's location).
+// "point", "spot", "goniometric", "projection", "distant" and "infinite" (uniform, from an
+// image: "filename", or through a "portal"). Throws InputError for unknown types and bad parameters (at the parameter's location).
 LightPtr create_light(const std::string &type, const Transform &render_from_light,
                       const ParameterDictionary &params, const SourceLocation &loc);
 
 // One "diffuse" area light per shape, the shapes already in render space. As in pbrt-v4, a
 // "power" applies to each shape separately (a triangle mesh's triangles each emit that power).
+// alpha is the shapes' cut-out (null if opaque).
 std::vector<LightPtr> create_area_lights(const std::string &type, const ParameterDictionary &params,
                                          const std::vector<std::shared_ptr<Shape>> &shapes,
-                                         const SourceLocation &loc);
+                                         const SourceLocation &loc,
+                                         std::shared_ptr<const AlphaMask> alpha = nullptr);
 
 }  // namespace caustica

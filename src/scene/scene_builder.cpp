@@ -221,20 +221,30 @@ const Material *material_for(const ShapeEntity &s, const MaterialTable &table) {
     return default_material.get();
 }
 
-void add_shapes(const SceneDescription &d, const MaterialTable &materials, const MediumTable &media,
-                Scene &scene) {
+// The shape's "alpha" (a float or a float texture), or null when it is opaque. Parameters that
+// no part of the renderer read are then reported, as for the other directives.
+std::shared_ptr<const AlphaMask> alpha_for(const ShapeEntity &s, const NamedTextures &textures) {
+    auto alpha = make_alpha_mask(s.params.get_float_texture_or_null("alpha", textures));
+    s.params.report_unused();
+    return alpha;
+}
+
+void add_shapes(const SceneDescription &d, const NamedTextures &textures, const MaterialTable &materials,
+                const MediumTable &media, Scene &scene) {
     for (const ShapeEntity &s : d.shapes) {
         // A moving shape is built in its own space and placed by Embree at each ray's time.
         auto group = create_shape(s.type, s.render_from_object_end ? Transform() : s.render_from_object,
                                   s.reverse_orientation, s.params, s.loc);
         if (!group) continue;
         PrimitiveAttributes attrs;
+        attrs.alpha = alpha_for(s, textures);
         attrs.material = material_for(s, materials);
         attrs.medium_interface = interface_for(s, media, scene);
         scene.features.medium_boundaries |= attrs.material == nullptr;
         if (s.area_light_index >= 0) {
             const SceneEntity &area = d.area_lights.at(s.area_light_index);
-            for (LightPtr &light : create_area_lights(area.type, area.params, group->shapes(), area.loc)) {
+            for (LightPtr &light :
+                 create_area_lights(area.type, area.params, group->shapes(), area.loc, attrs.alpha)) {
                 light->set_medium(find_medium(media, s.outside_medium));
                 attrs.area_lights.push_back(light.get());
                 scene.lights.push_back(std::move(light));
@@ -250,8 +260,8 @@ void add_shapes(const SceneDescription &d, const MaterialTable &materials, const
     }
 }
 
-void add_instances(const SceneDescription &d, const MaterialTable &materials, const MediumTable &media,
-                   Scene &scene) {
+void add_instances(const SceneDescription &d, const NamedTextures &textures,
+                   const MaterialTable &materials, const MediumTable &media, Scene &scene) {
     std::map<std::string, int> prototypes;
     for (const InstanceDefinition &def : d.instances) {
         std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> members;
@@ -262,6 +272,7 @@ void add_instances(const SceneDescription &d, const MaterialTable &materials, co
                 warning(s.loc, "area lights inside object instances are not supported; the shape "
                                "is instanced without emission");
             PrimitiveAttributes attrs;
+            attrs.alpha = alpha_for(s, textures);
             attrs.material = material_for(s, materials);
             attrs.medium_interface = interface_for(s, media, scene);
             scene.features.medium_boundaries |= attrs.material == nullptr;
@@ -416,8 +427,8 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     MediumTable media = create_media(d, *scene);
     scene->camera_medium = find_medium(media, d.camera.medium);
     scene->geometry.set_transform_times(d.transform_times);
-    add_shapes(d, materials, media, *scene);
-    add_instances(d, materials, media, *scene);
+    add_shapes(d, textures, materials, media, *scene);
+    add_instances(d, textures, materials, media, *scene);
     add_lights(d, media, *scene);
 
     scene->geometry.commit();

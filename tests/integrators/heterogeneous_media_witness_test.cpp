@@ -40,14 +40,7 @@ using namespace caustica::testing;
 
 namespace {
 
-class PbrtHeterogeneousMedia : public ::testing::TestWithParam<RenderCase> {};
-
-TEST_P(PbrtHeterogeneousMedia, MatchPbrtV4) {
-    const RenderCase &c = GetParam();
-    expect_agreement_with_pbrt(c.scene, c.integrator, c.spp);
-}
-
-INSTANTIATE_TEST_SUITE_P(Integrators, PbrtHeterogeneousMedia,
+INSTANTIATE_TEST_SUITE_P(HeterogeneousMedia, PbrtWitness,
                          ::testing::Values(RenderCase{"media/smoke-uniformgrid", "pt", 128},
                                            RenderCase{"media/smoke-uniformgrid", "lt", 128},
                                            RenderCase{"media/smoke-uniformgrid", "bdpt", 32},
@@ -82,6 +75,6 @@ INSTANTIATE_TEST_SUITE_P(Integrators, PbrtHeterogeneousMedia,
                                            RenderCase{"media/fog-caustic-grid", "bdpt", 16},
                                            RenderCase{"media/fog-caustic-grid", "sppm", 2048},
                                            RenderCase{"media/fog-caustic-grid", "bpm", 1024}),
-                         [](const ::testing::TestParamInfo<RenderCase> &info) { return case_name(info.param); });
+                         witness_case_name);
 
 } // namespace

@@ -19,14 +19,7 @@ using namespace caustica::testing;
 
 namespace {
 
-class PbrtLights : public ::testing::TestWithParam<RenderCase> {};
-
-TEST_P(PbrtLights, MatchPbrtV4) {
-    const RenderCase &c = GetParam();
-    expect_agreement_with_pbrt(c.scene, c.integrator, c.spp);
-}
-
-INSTANTIATE_TEST_SUITE_P(Integrators, PbrtLights,
+INSTANTIATE_TEST_SUITE_P(Lights, PbrtWitness,
                          ::testing::Values(RenderCase{"lights/goniometric", "pt", 64},
                                            RenderCase{"lights/goniometric", "lt", 16},
                                            RenderCase{"lights/goniometric", "bdpt", 16},
@@ -38,6 +31,6 @@ INSTANTIATE_TEST_SUITE_P(Integrators, PbrtLights,
                                            RenderCase{"lights/portal-window", "sppm", 128},
                                            RenderCase{"lights/portal-window", "bpm", 512},
                                            RenderCase{"lights/portal-window", "vcm", 16}),
-                         [](const ::testing::TestParamInfo<RenderCase> &info) { return case_name(info.param); });
+                         witness_case_name);
 
 } // namespace

@@ -18,14 +18,7 @@ using namespace caustica::testing;
 
 namespace {
 
-class MotionBlur : public ::testing::TestWithParam<RenderCase> {};
-
-TEST_P(MotionBlur, MatchesPbrtV4) {
-    const RenderCase &c = GetParam();
-    expect_agreement_with_pbrt(c.scene, c.integrator, c.spp);
-}
-
-INSTANTIATE_TEST_SUITE_P(Integrators, MotionBlur,
+INSTANTIATE_TEST_SUITE_P(MotionBlur, PbrtWitness,
                          ::testing::Values(RenderCase{"motion/moving-sphere", "pt", 256},
                                            RenderCase{"motion/moving-sphere", "lt", 256},
                                            RenderCase{"motion/moving-sphere", "bdpt", 128},
@@ -38,6 +31,6 @@ INSTANTIATE_TEST_SUITE_P(Integrators, MotionBlur,
                                            RenderCase{"motion/moving-camera", "sppm", 256},
                                            RenderCase{"motion/moving-camera", "bpm", 256},
                                            RenderCase{"motion/moving-camera", "vcm", 256}),
-                         [](const ::testing::TestParamInfo<RenderCase> &info) { return case_name(info.param); });
+                         witness_case_name);
 
 } // namespace

@@ -176,6 +176,15 @@ inline std::string case_name(const RenderCase &c) {
         if (ch == '-') ch = '_';
     return name;
 }
+inline std::string witness_case_name(const ::testing::TestParamInfo<RenderCase> &info) {
+    return case_name(info.param);
+}
+
+// The suites that render scenes in several integrators against pbrt-v4's image of the same file
+// (lights, heterogeneous media, motion blur, alpha cut-outs) each instantiate this fixture with
+// their cases: INSTANTIATE_TEST_SUITE_P(Suite, PbrtWitness, ::testing::Values(...), witness_case_name).
+// Its one test, expect_agreement_with_pbrt, is in pbrt_witness_test.cpp.
+class PbrtWitness : public ::testing::TestWithParam<RenderCase> {};
 
 // Two renders of one scene by one integrator with seeds seed and seed + 1, into dir;
 // environment (e.g. "CAUSTICA_TEST_FAULT=...") is set for the command.

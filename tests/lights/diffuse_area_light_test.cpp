@@ -47,6 +47,34 @@ TEST(DiffuseAreaLight, OnAxisIrradianceMatchesFormFactor) {
     }
 }
 
+// Alpha 0 on the half x < 0 of the disk: that half is not there.
+class HalfDiskCut final : public FloatTexture {
+  public:
+    float evaluate(const TextureEvalContext &ctx) const override { return ctx.p.x < 0 ? 0.f : 1.f; }
+};
+
+// A disk light with half of it cut away gives half the full disk's on-axis irradiance (by
+// symmetry), and neither light sampling nor emitted rays start on the cut half. Tolerance as in
+// OnAxisIrradianceMatchesFormFactor (the estimator's variance at most doubles).
+TEST(DiffuseAreaLight, AlphaCutOutEmitsOnlyWhereTheShapeIs) {
+    auto disk = std::make_shared<TestDisk>(Vec3f(0, 0, 2), Vec3f(0, 0, -1), 1.5f);
+    DiffuseAreaLight light(disk, std::make_shared<ConstantSpectrum>(2.f), 1.5f, false,
+                           make_alpha_mask(std::make_shared<HalfDiskCut>()));
+    const LightSampleContext ctx{{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+    const double E = estimate_irradiance(light, ctx, 200000, 11);
+    const double expected = 0.5 * on_axis_irradiance(3.0, 1.5, 1.0);
+    EXPECT_NEAR(E, expected, 0.015 * expected);
+    Rng rng(4, 4);
+    int started = 0;
+    for (int i = 0; i < 4000; ++i) {
+        auto s = light.sample_le(rng.uniform2(), rng.uniform2(), some_wavelengths());
+        if (!s) continue;
+        ++started;
+        EXPECT_GE(s->ray.o.x, -1e-4f);
+    }
+    EXPECT_NEAR(started / 4000.0, 0.5, 0.04); // 5 binomial standard deviations
+}
+
 TEST(DiffuseAreaLight, OneSidedEmitsOnlyOnTheNormalSide) {
     auto disk = std::make_shared<TestDisk>(Vec3f(0, 0, 0), Vec3f(0, 0, 1), 1.f);
     SampledWavelengths lambda = some_wavelengths();
