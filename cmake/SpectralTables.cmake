@@ -9,6 +9,7 @@ set(CAUSTICA_RGB2SPEC_RESOLUTION 64 CACHE STRING
 find_package(Threads REQUIRED)
 add_executable(caustica_rgb2spec_gen
   ${CMAKE_CURRENT_SOURCE_DIR}/tools/rgb2spec_gen.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/spectral/camera_sensor_data.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/spectral/cie.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/spectral/cie_data.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/spectral/ior.cpp

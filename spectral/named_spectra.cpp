@@ -1,5 +1,6 @@
 #include "spectral/named_spectra.h"
 
+#include "spectral/camera_sensor_data.h"
 #include "spectral/cie.h"
 #include "spectral/ior.h"
 #include "spectral/metal_data.h"
@@ -64,6 +65,11 @@ std::map<std::string, SpectrumPtr> build_named_spectra() {
             normalized(std::make_shared<PiecewiseLinearSpectrum>(cie_illuminant_f(i)));
     // The ACES white point: CIE daylight at exactly 6000 K (SMPTE ST 2065-1).
     spectra["illum-acesD60"] = normalized(daylight_illuminant(6000));
+    for (const CameraSensorCurves &sensor : camera_sensor_curves()) {
+        spectra[sensor.name + "_r"] = PiecewiseLinearSpectrum::from_interleaved(sensor.r, false);
+        spectra[sensor.name + "_g"] = PiecewiseLinearSpectrum::from_interleaved(sensor.g, false);
+        spectra[sensor.name + "_b"] = PiecewiseLinearSpectrum::from_interleaved(sensor.b, false);
+    }
     return spectra;
 }
 

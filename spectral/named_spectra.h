@@ -2,7 +2,8 @@
 //  - "glass-*", "gem-*", "water": refractive indices (ior.h);
 //  - "metal-{Ag,Al,Au,Cu,CuZn,MgO,TiO2}-{eta,k}": complex refractive indices (metal_data.h);
 //  - "stdillum-A", "stdillum-D50", "stdillum-D65", "stdillum-F1".."stdillum-F12",
-//    "illum-acesD60": illuminants normalised to luminance 1 (integral of s ybar = CIE_Y_integral).
+//    "illum-acesD60": illuminants normalised to luminance 1 (integral of s ybar = CIE_Y_integral);
+//  - "<camera sensor>_r", "_g", "_b": camera sensors' responses (camera_sensor_data.h).
 #pragma once
 
 #include "spectral/spectrum.h"

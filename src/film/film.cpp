@@ -1,5 +1,7 @@
 #include "film/film.h"
 
+#include "spectral/camera_sensor_data.h"
+
 #include <cassert>
 #include <cmath>
 #include <istream>
@@ -294,14 +296,18 @@ std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictio
 
     float iso = params.get_one_float("iso", 100);
     if (!(iso > 0)) throw InputError(params.location("iso"), "\"iso\" must be positive");
-    std::string sensor_name = params.get_one_string("sensor", "cie1931");
-    float white_balance = params.get_one_float("whitebalance", 0);
-    if (sensor_name != "cie1931") {
-        warning(params.location("sensor"), "sensor \"" + sensor_name + "\" is not supported; using the "
-                                           "CIE 1931 observer (\"cie1931\")");
-        // pbrt-v4 white-balances measured camera sensors to 6500 K unless told otherwise.
-        if (white_balance == 0) white_balance = 6500;
+    const std::string sensor_name = params.get_one_string("sensor", "cie1931");
+    const CameraSensorCurves *camera_sensor = nullptr;
+    for (const CameraSensorCurves &curves : camera_sensor_curves())
+        if (curves.name == sensor_name) camera_sensor = &curves;
+    if (sensor_name != "cie1931" && !camera_sensor) {
+        std::string known = "\"cie1931\"";
+        for (const CameraSensorCurves &curves : camera_sensor_curves()) known += ", \"" + curves.name + "\"";
+        throw InputError(params.location("sensor"), "unknown sensor \"" + sensor_name + "\" (known: " + known + ")");
     }
+    float white_balance = params.get_one_float("whitebalance", 0);
+    // pbrt-v4 white-balances camera sensors to 6500 K unless told otherwise.
+    if (camera_sensor && white_balance == 0) white_balance = 6500;
     if (!(white_balance >= 0))
         throw InputError(params.location("whitebalance"), "\"whitebalance\" must not be negative");
     float max_component = params.get_one_float("maxcomponentvalue", Infinity);
@@ -311,7 +317,14 @@ std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictio
 
     std::optional<PixelSensor> sensor;
     try {
-        sensor.emplace(output, white_balance, exposure_time * iso / 100);
+        const float imaging_ratio = exposure_time * iso / 100;
+        if (camera_sensor)
+            sensor.emplace(output, *PiecewiseLinearSpectrum::from_interleaved(camera_sensor->r, false),
+                           *PiecewiseLinearSpectrum::from_interleaved(camera_sensor->g, false),
+                           *PiecewiseLinearSpectrum::from_interleaved(camera_sensor->b, false), white_balance,
+                           imaging_ratio);
+        else
+            sensor.emplace(output, white_balance, imaging_ratio);
     } catch (const std::domain_error &e) {
         throw InputError(params.location("whitebalance"), e.what());
     }

@@ -161,9 +161,10 @@ CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filt
 
 // pbrt-v4's "rgb" film ("gbuffer" and "spectral" are accepted with a warning and written as
 // rgb): "xresolution" (1280), "yresolution" (720), "filename" ("pbrt.exr"), "cropwindow",
-// "pixelbounds", "iso" (100), "whitebalance" (0: none), "sensor" ("cie1931"; others warn and use
-// it), "maxcomponentvalue" (infinity), "savefp16" (false here: Caustica writes full floats
-// unless asked). exposure_time is the camera's shutter interval (camera_exposure_time()).
+// "pixelbounds", "iso" (100), "whitebalance" (0: none; 6500 for camera sensors), "sensor"
+// ("cie1931", or a camera's: pixel_sensor.h), "maxcomponentvalue" (infinity), "savefp16" (false
+// here: Caustica writes full floats unless asked). exposure_time is the camera's shutter
+// interval.
 // What the command line sets in place of the Film's parameters: resolution components > 0, and
 // a crop window (x0 x1 y0 y1 in [0, 1]) or pixel bounds (x0 x1 y0 y1 in pixels) when not empty,
 // as pbrt-v4's --cropwindow and --pixelbounds.
