@@ -42,8 +42,8 @@ std::shared_ptr<const DenselySampledSpectrum> dense(const Spectrum &s) {
 // The training chart of camera sensors' colour matrices: the 24 patches of the ColorChecker
 // Classic by their sRGB values as X-Rite publishes them (8-bit, sRGB-encoded), each turned into
 // the smooth reflectance spectrum of that colour. pbrt-v4 fits to BabelColor's measured spectra
-// of the same patches, which it may redistribute by permission; the fitted matrices are close
-// (docs/pbrt-v4-coverage.md gives the image differences).
+// of the same patches, which it may redistribute by permission. Colours then differ from
+// pbrt-v4's by a few percent (docs/pbrt-v4-coverage.md has the figures).
 std::vector<RGBAlbedoSpectrum> training_chart() {
     static const int srgb8[24][3] = {
         {115, 82, 68},   {194, 150, 130}, {98, 122, 157},  {87, 108, 67},   {133, 128, 177}, {103, 189, 170},
