@@ -47,6 +47,7 @@ cameras/realistic-crescent 4096
 lights/goniometric 1024
 lights/projection 1024
 lights/portal-window 4096
+lights/emission-image 1024
 media/smoke-uniformgrid 8192
 media/smoke-rgbgrid 8192
 media/ground-fog 8192

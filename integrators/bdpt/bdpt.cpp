@@ -164,6 +164,7 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     origin.at_infinity = light.type() == LightType::Infinite || light.type() == LightType::DeltaDirection;
     origin.si.p = les->ray.o;
     origin.si.n = origin.si.shading.n = les->n;
+    origin.si.uv = les->uv;
     // Light paths start in the light's medium (for an area light, that on its shape's outside).
     origin.medium = light.medium();
     origin.beta = les->L / (start->pmf * les->pdf_pos);
@@ -234,7 +235,7 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         if (qs.type == PathVertexType::Light) {
             // The light point itself (s = 1): emission towards the lens, with the cosine at
             // the light, over the densities of the point.
-            L = qs.light->L(qs.p(), qs.ng(), Vec2f{}, cs->wi, ctx.lambda) *
+            L = qs.light->L(qs.p(), qs.ng(), qs.si.uv, cs->wi, ctx.lambda) *
                 (abs_dot(qs.ng(), cs->wi) / qs.pdf_fwd);
         } else {
             L = qs.beta * qs.f(cs->wi, TransportMode::Importance) * qs.cosine(cs->wi, TransportMode::Importance);

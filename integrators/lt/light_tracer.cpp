@@ -54,12 +54,11 @@ void connect_light_vertex(const LightPathContext &ctx, const Light &light, const
     const Scene &scene = ctx.scene;
     // LightLeSample gives the sampled point only as the emitted ray's origin, already moved off
     // the surface towards the sampled direction (a few ulps): that offset is far below anything
-    // visible. It carries no uv either; Caustica's area lights emit uniformly over their shape,
-    // so L does not depend on it.
+    // visible.
     const Vec3f p = les.ray.o;
     auto cs = scene.camera->sample_wi(p, ctx.sample.sampler.get_2d(), lambda, les.ray.time);
     if (!cs || !(cs->pdf > 0)) return;
-    SampledSpectrum Le = light.L(p, les.n, Vec2f{}, cs->wi, lambda);
+    SampledSpectrum Le = light.L(p, les.n, les.uv, cs->wi, lambda);
     if (Le.is_black()) return;
     const float cosine = les.n == Vec3f{} ? 1.f : abs_dot(les.n, cs->wi);
     SampledSpectrum L = Le * cs->We * (cosine / (light_pmf * les.pdf_pos * cs->pdf));

@@ -1,5 +1,7 @@
-// Diffuse area light: constant radiance scale * L leaving every point of a shape, on the side of
-// its (oriented) normal, or on both sides when two-sided. A shape with an alpha cut-out emits
+// Diffuse area light: radiance scale * L leaving every point of a shape, on the side of its
+// (oriented) normal, or on both sides when two-sided. L is one spectrum, or, with an emission
+// image (pbrt-v4's "filename"), the RGB illuminant spectrum of the image's sRGB value at the
+// point's uv (v flipped, bilinear, as pbrt-v4). A shape with an alpha cut-out emits
 // only where it is there: points that the mask removes are never sampled as emitting, and rays
 // pass them without seeing their emission (geometry/alpha_mask.h).
 #pragma once
@@ -7,6 +9,7 @@
 #include "geometry/alpha_mask.h"
 #include "geometry/shape.h"
 #include "lights/light.h"
+#include "lights/rgb_image.h"
 #include "spectral/spectrum.h"
 
 #include <memory>
@@ -16,10 +19,11 @@ namespace caustica {
 class DiffuseAreaLight final : public Light {
   public:
     DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumPtr radiance, float scale,
-                     bool two_sided, std::shared_ptr<const AlphaMask> alpha = nullptr);
+                     bool two_sided, std::shared_ptr<const AlphaMask> alpha = nullptr,
+                     std::shared_ptr<const RGBImage> image = nullptr);
 
     LightType type() const override { return LightType::Area; }
-    const Spectrum *emission_spectrum() const override { return radiance_.get(); }
+    const Spectrum *emission_spectrum() const override { return image_ ? nullptr : radiance_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
     std::optional<Bounds3f> spatial_bounds() const override {
         return shape_->bounds();
@@ -40,9 +44,12 @@ class DiffuseAreaLight final : public Light {
     // Whether the alpha mask removes the sampled point (decided by a hash of the point, as
     // pbrt-v4 does).
     bool masked(const ShapeSample &s) const;
+    // The illuminant spectrum of an image's linear sRGB value (negative components clamped).
+    static SampledSpectrum emitted(const float *rgb, const SampledWavelengths &lambda);
 
     std::shared_ptr<const Shape> shape_;
     std::shared_ptr<const AlphaMask> alpha_;
+    std::shared_ptr<const RGBImage> image_;
     float area_;
     SpectrumPtr radiance_;
     float scale_;

@@ -43,6 +43,7 @@ struct LightLeSample {
     SampledSpectrum L;
     Ray ray;
     Vec3f n;                   // normal at the ray origin (zero if none)
+    Vec2f uv;                  // surface lights: the origin's uv, on which L may depend
     float pdf_pos = 0, pdf_dir = 0;
 };
 

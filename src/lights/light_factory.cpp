@@ -263,24 +263,34 @@ std::vector<LightPtr> create_area_lights(const std::string &type, const Paramete
                                          const SourceLocation &loc,
                                          std::shared_ptr<const AlphaMask> alpha) {
     if (type != "diffuse") throw InputError(loc, "unknown area light type \"" + type + "\"");
+    const std::string filename = params.get_one_string("filename", "");
+    if (!filename.empty() && params.has("L"))
+        throw InputError(params.location("filename"), "both \"L\" and \"filename\" given for a diffuse area light");
+    // An emission image (sRGB values) or a spectrum; either way "scale" 1 means the colour
+    // space's white at 1 nit.
+    std::shared_ptr<const RGBImage> image;
+    if (!filename.empty()) image = std::make_shared<RGBImage>(read_light_image(params, filename));
     SpectrumPtr L = light_spectrum(params, "L");
     float scale = photometric_scale(read_scale(params), *L);
     bool two_sided = params.get_one_bool("twosided", false);
     float power = params.get_one_float("power", -1);
-    if (!params.get_one_string("filename", "").empty())
-        warning(params.location("filename"),
-                "image-textured area light emission is not "
-                "supported; \"filename\" is ignored and \"L\" used");
+    // The image's mean luminance (pbrt-v4 takes it in the image's colour space: sRGB here).
+    float image_luminance = 1;
+    if (image) {
+        const RGB mean = image->average();
+        const auto &y = RGBColorSpace::srgb().xyz_from_rgb_matrix()[1];
+        image_luminance = y[0] * mean.r + y[1] * mean.g + y[2] * mean.b;
+    }
     SpectrumPtr radiance = tabulated(L);  // shared by all the shapes' lights
     std::vector<LightPtr> lights;
     lights.reserve(shapes.size());
     for (const std::shared_ptr<Shape> &shape : shapes) {
         float shape_scale = scale;
         // Radiance 1 over the hemisphere and the area gives power pi A per side.
-        float k_e = (two_sided ? 2 : 1) * shape->area() * Pi;
+        float k_e = (two_sided ? 2 : 1) * shape->area() * Pi * image_luminance;
         if (power > 0 && k_e > 0) shape_scale *= power / k_e;
         lights.push_back(
-            std::make_shared<DiffuseAreaLight>(shape, radiance, shape_scale, two_sided, alpha));
+            std::make_shared<DiffuseAreaLight>(shape, radiance, shape_scale, two_sided, alpha, image));
     }
     params.report_unused();
     return lights;

@@ -3,6 +3,7 @@
 #include "openimageio/openimageio_plugin.h"
 #include "spectral/color.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -36,6 +37,25 @@ RGBImage read_rgb_image(const std::string &filename) {
                 image.at(x, y)[c] = decode_srgb ? srgb_to_linear(v) : v;
             }
     return image;
+}
+
+RGB RGBImage::bilerp(Vec2f st) const {
+    const float x = st.x * float(width) - 0.5f, y = st.y * float(height) - 0.5f;
+    const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+    const float dx = x - float(x0), dy = y - float(y0);
+    auto texel = [&](int xi, int yi) {
+        const float *p = at(std::clamp(xi, 0, width - 1), std::clamp(yi, 0, height - 1));
+        return RGB{p[0], p[1], p[2]};
+    };
+    return texel(x0, y0) * ((1 - dx) * (1 - dy)) + texel(x0 + 1, y0) * (dx * (1 - dy)) +
+           texel(x0, y0 + 1) * ((1 - dx) * dy) + texel(x0 + 1, y0 + 1) * (dx * dy);
+}
+
+RGB RGBImage::average() const {
+    double sum[3] = {0, 0, 0};
+    for (size_t i = 0; i < pixels.size(); ++i) sum[i % 3] += pixels[i];
+    const double n = double(width) * double(height);
+    return RGB{float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
 }
 
 }  // namespace caustica

@@ -1,6 +1,9 @@
 // Linear RGB images for lights that read emission from a file (environment maps).
 #pragma once
 
+#include "core/vecmath.h"
+#include "spectral/color.h"
+
 #include <string>
 #include <vector>
 
@@ -12,6 +15,11 @@ struct RGBImage {
 
     const float *at(int x, int y) const { return &pixels[3 * (size_t(y) * width + x)]; }
     float *at(int x, int y) { return &pixels[3 * (size_t(y) * width + x)]; }
+    // Bilinear interpolation at st in [0, 1]^2 (s to the right, t down, pixel centres at
+    // half-integers over the resolution), clamped at the edges, as pbrt-v4's Image::Bilerp.
+    RGB bilerp(Vec2f st) const;
+    // The mean of every pixel.
+    RGB average() const;
 };
 
 // Reads R, G and B through the OpenImageIO plugin as linear floats: integer-coded files (PNG, JPEG, ...) are

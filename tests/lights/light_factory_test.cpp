@@ -163,6 +163,12 @@ TEST(LightFactory, ReportsUserErrors) {
     EXPECT_THROW(create_light("goniometric", Transform(), dictionary({}), {}), InputError);
     EXPECT_THROW(create_light("projection", Transform(), dictionary({}), {}), InputError);
     EXPECT_THROW(create_area_lights("glowing", dictionary({}), {}, {}), InputError);
+    EXPECT_THROW(create_area_lights("diffuse",
+                                    dictionary({numbers("rgb", "L", {1, 1, 1}), text("string", "filename", "glow.png")}),
+                                    {}, {}),
+                 InputError);
+    EXPECT_THROW(create_area_lights("diffuse", dictionary({text("string", "filename", "no-such-image.png")}), {}, {}),
+                 InputError);
     EXPECT_THROW(create_light("spot", Transform(),
                               dictionary({numbers("point3", "from", {1, 1, 1}),
                                           numbers("point3", "to", {1, 1, 1})}),
