@@ -6,15 +6,11 @@ lookup changes the rendered image.
 
     python3 scenes/generators/make_emission_image.py scenes/lights/emission-image.png
 """
-import struct
 import sys
-import zlib
+
+from png_file import write_png
 
 WIDTH, HEIGHT = 16, 8
-
-
-def chunk(kind, data):
-    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
 
 
 def colour(x, y):
@@ -29,15 +25,7 @@ def colour(x, y):
 
 
 def main(path):
-    rows = b""
-    for y in range(HEIGHT):  # PNG rows run from the top down
-        row = bytearray([0])  # filter type: none
-        for x in range(WIDTH):
-            row += bytes(colour(x, y))
-        rows += bytes(row)
-    header = struct.pack(">IIBBBBB", WIDTH, HEIGHT, 8, 2, 0, 0, 0)  # 8-bit RGB
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+    write_png(path, WIDTH, HEIGHT, colour)
 
 
 if __name__ == "__main__":

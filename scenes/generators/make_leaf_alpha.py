@@ -5,15 +5,11 @@ lookups give alpha values between 0 and 1 along the outline, as real leaf textur
 
     python3 scenes/generators/make_leaf_alpha.py scenes/textures/leaf-alpha.png
 """
-import struct
 import sys
-import zlib
+
+from png_file import write_png
 
 SIZE = 32
-
-
-def chunk(kind, data):
-    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
 
 
 def coverage(u, v):
@@ -25,16 +21,10 @@ def coverage(u, v):
 
 
 def main(path):
-    rows = b""
-    for y in range(SIZE):
-        row = bytearray([0])  # filter type: none
-        for x in range(SIZE):
-            u, v = -1 + 2 * (x + 0.5) / SIZE, -1 + 2 * (y + 0.5) / SIZE
-            row.append(round(255 * coverage(u, v)))
-        rows += bytes(row)
-    header = struct.pack(">IIBBBBB", SIZE, SIZE, 8, 0, 0, 0, 0)  # 8-bit greyscale
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+    def pixel(x, y):
+        return round(255 * coverage(-1 + 2 * (x + 0.5) / SIZE, -1 + 2 * (y + 0.5) / SIZE))
+
+    write_png(path, SIZE, SIZE, pixel)
 
 
 if __name__ == "__main__":
