@@ -171,9 +171,13 @@ void GeometryScene::check_device(const char *what) const {
 
 void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group,
                            const AlphaMask *alpha) {
-    callback_data_.push_back(std::make_unique<EmbreeCallbackData>(
-        EmbreeCallbackData{group.mesh.get(), group.analytic.get(), alpha}));
-    void *callback_data = const_cast<EmbreeCallbackData *>(callback_data_.back().get());
+    // Only analytic shapes and cut-outs have callbacks.
+    void *callback_data = nullptr;
+    if (group.analytic || alpha) {
+        callback_data_.push_back(std::make_unique<EmbreeCallbackData>(
+            EmbreeCallbackData{group.mesh.get(), group.analytic.get(), alpha}));
+        callback_data = callback_data_.back().get();
+    }
     RTCGeometry geometry;
     if (group.mesh) {
         const TriangleMesh &mesh = *group.mesh;

@@ -108,7 +108,7 @@ class GeometryScene {
     std::vector<Prototype> prototypes_;
     std::vector<Instance> instances_;
     // What Embree's callbacks read for each geometry (embree_scene.cpp).
-    std::vector<std::unique_ptr<const EmbreeCallbackData>> callback_data_;
+    std::vector<std::unique_ptr<EmbreeCallbackData>> callback_data_;
     size_t shape_count_ = 0, triangle_count_ = 0, moving_instances_ = 0;
     TransformTimes times_;
     bool committed_ = false;
