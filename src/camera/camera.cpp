@@ -13,6 +13,8 @@ bool Camera::set_motion(const AnimatedTransform &world_from_camera, TransformTim
     for (int i = 0; i < 6; ++i)
         if (!(std::abs(sa[i] - sb[i]) <= 1e-4f * (1 + std::abs(sa[i])))) return false;
     motion_ = world_from_camera;
+    start_factors_ = a;
+    end_factors_ = b;
     rest_from_world_ = world_from_camera.start.inverse();
     times_ = times;
     moves_ = world_from_camera.is_animated();
@@ -20,7 +22,10 @@ bool Camera::set_motion(const AnimatedTransform &world_from_camera, TransformTim
 }
 
 Transform Camera::moved_at(float time) const {
-    return motion_.at(times_.fraction(time)) * rest_from_world_;
+    const float u = times_.fraction(time);
+    if (!moves_ || u <= 0) return Transform();
+    if (u >= 1) return motion_.end * rest_from_world_;
+    return interpolate(start_factors_, end_factors_, u) * rest_from_world_;
 }
 
 namespace {

@@ -104,6 +104,7 @@ class Camera {
     Transform moved_at(float time) const;
 
     AnimatedTransform motion_;       // world from camera, start and end
+    AffineFactors start_factors_, end_factors_; // of motion_'s placements, for interpolate()
     Transform rest_from_world_;      // the inverse of motion_.start
     TransformTimes times_;
     bool moves_ = false;

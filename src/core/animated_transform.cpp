@@ -62,7 +62,10 @@ Matrix4 compose(const AffineFactors &f) {
 Transform AnimatedTransform::at(float u) const {
     if (!is_animated() || u <= 0) return start;
     if (u >= 1) return end;
-    const AffineFactors a = factor_affine(start.matrix()), b = factor_affine(end.matrix());
+    return interpolate(factor_affine(start.matrix()), factor_affine(end.matrix()), u);
+}
+
+Transform interpolate(const AffineFactors &a, const AffineFactors &b, float u) {
     auto lerp = [u](float p, float q) { return (1 - u) * p + u * q; };
     AffineFactors f;
     f.translation = a.translation * (1 - u) + b.translation * u;

@@ -28,6 +28,10 @@ struct AffineFactors {
 };
 AffineFactors factor_affine(const Matrix4 &m);
 Matrix4 compose(const AffineFactors &factors);
+// The placement at fraction u in (0, 1) of the way from the placement with factors a to that
+// with factors b: T and S interpolated linearly, R by slerp. For callers that ask many times
+// and keep the factors (AnimatedTransform::at factors both ends on every call).
+Transform interpolate(const AffineFactors &a, const AffineFactors &b, float u);
 
 struct AnimatedTransform {
     Transform start, end;
