@@ -63,6 +63,21 @@ inline std::string data_path(const std::string &relative) {
     return std::string(CAUSTICA_TEST_DATA) + "/" + relative;
 }
 
+// The scratch directories this process made, removed when it exits if every test it ran passed;
+// a failed test's outputs stay to be looked at. (ctest runs each test in a process of its own.)
+struct ScratchDirectories {
+    std::vector<std::filesystem::path> paths;
+    ~ScratchDirectories() {
+        if (!::testing::UnitTest::GetInstance()->Passed()) return;
+        std::error_code ignored;
+        for (const std::filesystem::path &p : paths) std::filesystem::remove_all(p, ignored);
+    }
+};
+inline ScratchDirectories &scratch_directories() {
+    static ScratchDirectories directories;
+    return directories;
+}
+
 // A fresh directory for one test's outputs, unique to the process so that concurrent test runs
 // (ctest -j, or two checkouts tested at once) never share one.
 inline std::string scratch_dir(const std::string &name) {
@@ -70,6 +85,7 @@ inline std::string scratch_dir(const std::string &name) {
                ("caustica-test-" + name + "-" + std::to_string(getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
+    scratch_directories().paths.push_back(dir);
     return dir.string();
 }
 
