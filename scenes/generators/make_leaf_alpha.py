@@ -1,7 +1,10 @@
-"""Writes scenes/textures/leaf-alpha.png, the alpha map of the instanced leaves in
-scenes/textures/alpha-cutouts.pbrt: a 32x32 8-bit greyscale leaf, an ellipse that narrows to a
-point at both ends of its long (x) axis, with a soft edge about one texel wide so that bilinear
-lookups give alpha values between 0 and 1 along the outline, as real leaf textures do.
+"""Writes scenes/textures/leaf-alpha.png, the colour and alpha map of the instanced leaves in
+scenes/textures/alpha-cutouts.pbrt: a 32x32 8-bit RGBA leaf, an ellipse that narrows to a point
+at both ends of its long (x) axis, with a soft edge about one texel wide so that bilinear lookups
+give alpha values between 0 and 1 along the outline, as real leaf textures do. Its colour runs
+from green at the stem (left) to yellow at the tip and stays on where alpha is 0, as in real
+files whose colour is not multiplied by alpha: a reader that premultiplies darkens the soft
+edge, and a float texture of the file reads its alpha (pbrt-v4's rule for files with alpha).
 
     python3 scenes/generators/make_leaf_alpha.py scenes/textures/leaf-alpha.png
 """
@@ -22,7 +25,9 @@ def coverage(u, v):
 
 def main(path):
     def pixel(x, y):
-        return round(255 * coverage(-1 + 2 * (x + 0.5) / SIZE, -1 + 2 * (y + 0.5) / SIZE))
+        u = (x + 0.5) / SIZE
+        alpha = round(255 * coverage(-1 + 2 * u, -1 + 2 * (y + 0.5) / SIZE))
+        return (round(60 + 150 * u), round(170 + 40 * u), 40, alpha)
 
     write_png(path, SIZE, SIZE, pixel)
 

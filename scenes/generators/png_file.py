@@ -1,4 +1,5 @@
-"""Writes 8-bit PNG files (greyscale or RGB) without image libraries, for the scene generators."""
+"""Writes 8-bit PNG files (greyscale, RGB or RGBA) without image libraries, for the scene
+generators."""
 import struct
 import zlib
 
@@ -8,9 +9,9 @@ def _chunk(kind, data):
 
 
 def write_png(path, width, height, pixel):
-    """pixel(x, y) gives an int in [0, 255] (greyscale) or a tuple of three (RGB); y runs from
-    the top of the image down, as PNG rows do."""
-    channels = 1 if isinstance(pixel(0, 0), int) else 3
+    """pixel(x, y) gives an int in [0, 255] (greyscale) or a tuple of three (RGB) or four (RGBA,
+    alpha not premultiplied); y runs from the top of the image down, as PNG rows do."""
+    channels = 1 if isinstance(pixel(0, 0), int) else len(pixel(0, 0))
     rows = b""
     for y in range(height):
         row = bytearray([0])  # filter type: none
@@ -18,6 +19,7 @@ def write_png(path, width, height, pixel):
             value = pixel(x, y)
             row += bytes([value] if channels == 1 else value)
         rows += bytes(row)
-    header = struct.pack(">IIBBBBB", width, height, 8, 0 if channels == 1 else 2, 0, 0, 0)
+    colour_type = {1: 0, 3: 2, 4: 6}[channels]
+    header = struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)
     with open(path, "wb") as f:
         f.write(b"\x89PNG\r\n\x1a\n" + _chunk(b"IHDR", header) + _chunk(b"IDAT", zlib.compress(rows)) + _chunk(b"IEND", b""))

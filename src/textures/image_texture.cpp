@@ -98,6 +98,9 @@ SampledSpectrum SpectrumImageTexture::evaluate(const TextureEvalContext &ctx, co
 
 namespace {
 
+// Which channel a float texture reads from a file with several (decode_texels).
+enum class FloatTexels { FirstChannel, AlphaOrMean };
+
 // How an 8-bit file's values map to linear ones (pbrt-v4's ColorEncoding).
 struct Encoding {
     enum Kind { Linear, SRGB, Gamma } kind = SRGB;
@@ -121,17 +124,36 @@ Encoding read_encoding(const ParameterDictionary &params) {
                      "\"encoding\" must be \"sRGB\", \"linear\" or \"gamma <exponent>\", not \"" + name + "\"");
 }
 
+// The channel of an alpha that is not 1 everywhere, or -1.
+int partial_alpha_channel(const DecodedImage &decoded) {
+    const int a = decoded.channel_index("A");
+    if (a < 0) return -1;
+    for (int y = 0; y < decoded.height; ++y)
+        for (int x = 0; x < decoded.width; ++x)
+            if (decoded.at(x, y, a) != 1) return a;
+    return -1;
+}
+
 // The texels of `path` with `channels` channels: for 3, R, G and B (a grey image's one channel
-// three times); for 1, the first channel, as pbrt-v4's float textures read it.
-std::shared_ptr<const TexelImage> decode_texels(const std::string &path, int channels, Encoding encoding) {
+// three times). For 1, as pbrt-v4's float textures read a file (its MIPMap's Texel and Bilerp):
+// a grey image's grey (pbrt-v4 drops a grey PNG's alpha); a colour image's first channel with
+// FloatTexels::FirstChannel ("point" and "ewa" lookups), and with FloatTexels::AlphaOrMean
+// ("bilinear" and "trilinear") its alpha channel when that is not 1 everywhere (a cut-out's
+// alpha map), else the mean of R, G and B.
+std::shared_ptr<const TexelImage> decode_texels(const std::string &path, int channels, Encoding encoding,
+                                                FloatTexels float_texels) {
     const DecodedImage decoded = read_image_file(path);
     if (decoded.width <= 0 || decoded.height <= 0 || decoded.channels <= 0)
         throw std::runtime_error("image \"" + path + "\" has no pixels");
-    int source[3] = {0, 0, 0};
+    // Each output channel is the mean of its source channels (one, or R, G and B).
+    std::vector<std::vector<int>> source(channels, std::vector<int>{0});
+    int r = decoded.channel_index("R"), g = decoded.channel_index("G"), b = decoded.channel_index("B");
+    if (r < 0 || g < 0 || b < 0) r = 0, g = 1, b = 2;
     if (channels == 3 && decoded.channels >= 3) {
-        source[0] = decoded.channel_index("R"), source[1] = decoded.channel_index("G"),
-        source[2] = decoded.channel_index("B");
-        if (source[0] < 0 || source[1] < 0 || source[2] < 0) source[0] = 0, source[1] = 1, source[2] = 2;
+        source = {{r}, {g}, {b}};
+    } else if (channels == 1 && decoded.channels >= 3 && float_texels == FloatTexels::AlphaOrMean) {
+        if (const int a = partial_alpha_channel(decoded); a >= 0) source = {{a}};
+        else source = {{r, g, b}};
     }
     // Float files hold linear values; the encoding is for integer-coded ones.
     const bool decode = !decoded.float_format;
@@ -139,23 +161,28 @@ std::shared_ptr<const TexelImage> decode_texels(const std::string &path, int cha
     for (int y = 0; y < decoded.height; ++y)
         for (int x = 0; x < decoded.width; ++x)
             for (int c = 0; c < channels; ++c) {
-                float v = decoded.at(x, y, source[c]);
-                if (!std::isfinite(v))
-                    throw std::runtime_error("image \"" + path + "\" has infinite or not-a-number texels");
-                texels[(size_t(y) * decoded.width + x) * channels + c] = decode ? encoding.decode(v) : v;
+                float sum = 0;
+                for (int s : source[c]) {
+                    const float v = decoded.at(x, y, s);
+                    if (!std::isfinite(v))
+                        throw std::runtime_error("image \"" + path + "\" has infinite or not-a-number texels");
+                    sum += decode ? encoding.decode(v) : v;
+                }
+                texels[(size_t(y) * decoded.width + x) * channels + c] = sum / float(source[c].size());
             }
     return std::make_shared<TexelImage>(decoded.width, decoded.height, channels, std::move(texels));
 }
 
 // Textures that read the same file the same way share its texels (scenes often use one image
 // for several materials). Scene building is single-threaded, the lock is for safety only.
-std::shared_ptr<const TexelImage> cached_texels(const std::string &path, int channels, Encoding encoding) {
+std::shared_ptr<const TexelImage> cached_texels(const std::string &path, int channels, Encoding encoding,
+                                                FloatTexels float_texels = FloatTexels::AlphaOrMean) {
     static std::mutex mutex;
-    static std::map<std::tuple<std::string, int, int, float>, std::weak_ptr<const TexelImage>> cache;
+    static std::map<std::tuple<std::string, int, int, float, int>, std::weak_ptr<const TexelImage>> cache;
     std::lock_guard lock(mutex);
-    auto key = std::tuple{path, channels, int(encoding.kind), encoding.gamma};
+    auto key = std::tuple{path, channels, int(encoding.kind), encoding.gamma, int(float_texels)};
     if (auto image = cache[key].lock()) return image;
-    auto image = decode_texels(path, channels, encoding);
+    auto image = decode_texels(path, channels, encoding, float_texels);
     cache[key] = image;
     return image;
 }
@@ -174,8 +201,11 @@ ImageLookup read_image_lookup(TextureMapping2D mapping, const ParameterDictionar
     if (filename.empty()) throw InputError(loc, "imagemap: no \"filename\" given");
     const Encoding encoding = read_encoding(params);
     const std::string path = params.file_path("filename", filename);
+    const std::string filter = params.get_one_string("filter", "bilinear");
+    const FloatTexels float_texels =
+        filter == "point" || filter == "ewa" || filter == "EWA" ? FloatTexels::FirstChannel : FloatTexels::AlphaOrMean;
     try {
-        lookup.image = cached_texels(path, channels, encoding);
+        lookup.image = cached_texels(path, channels, encoding, float_texels);
     } catch (const std::runtime_error &e) {
         throw InputError(params.location("filename"), e.what());
     }
@@ -188,7 +218,6 @@ ImageLookup read_image_lookup(TextureMapping2D mapping, const ParameterDictionar
         throw InputError(params.location("wrap"),
                          "\"wrap\" must be \"repeat\", \"black\", \"clamp\" or \"octahedralsphere\", not \"" + wrap +
                              "\"");
-    const std::string filter = params.get_one_string("filter", "bilinear");
     if (filter == "point") {
         lookup.nearest = true;
     } else if (filter == "trilinear" || filter == "ewa" || filter == "EWA") {

@@ -31,7 +31,8 @@ TEST(ShadingNormals, BumpAndNormalMapsMatchPbrtV4) {
 
 // Alpha cut-outs ("alpha" on shapes), scenes/textures/alpha-cutouts.pbrt, in every integrator:
 // checkerboard cut-outs in a triangle mesh, a cylinder and the emitting lamp itself, a sphere
-// with constant alpha 0.5 (stochastic transparency), and image-cut leaves in object instances.
+// with constant alpha 0.5 (stochastic transparency), and leaves in object instances, cut by the
+// alpha channel of an RGBA image whose RGB colours them.
 // Every ray, camera, light or shadow, must meet the same mask, and light paths must start only
 // where the lamp is there. Negative controls (one run each, then undone):
 // - the lamp emitting over its cut squares too: pt, lt and bdpt 78% too bright (|z| 126 to 218);
@@ -40,7 +41,10 @@ TEST(ShadingNormals, BumpAndNormalMapsMatchPbrtV4) {
 // - bdpt skipping next-event estimation when its light subpath did not start (the lamp's cut
 //   squares): 22% too dark (|z| 67);
 // - photon density on the sphere (alpha 0.5) not divided by its coverage: sppm 1.3% and bpm
-//   1.6% too dark (|z| 9 and 5.7 on the sphere).
+//   1.6% too dark (|z| 9 and 5.7 on the sphere);
+// - the leaves' float texture reading the mean of R, G and B rather than the alpha channel:
+//   pt |z| 7.2. (Colours multiplied by alpha, as OpenImageIO reads PNGs by default, stay within
+//   the bounds here, |z| 3.0: the soft edge is a few pixels; image_texture_test.cpp tests it.)
 INSTANTIATE_TEST_SUITE_P(AlphaCutouts, PbrtWitness,
                          ::testing::Values(RenderCase{"textures/alpha-cutouts", "pt", 256},
                                            RenderCase{"textures/alpha-cutouts", "lt", 256},

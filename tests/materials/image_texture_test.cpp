@@ -12,6 +12,9 @@
 #include <ImfRgbaFile.h>
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <unistd.h>
 
@@ -37,14 +40,49 @@ class ImageTextureTest : public ::testing::Test {
         set_warnings_enabled(true);
         std::filesystem::remove_all(dir_);
     }
-    // A 2x2 half-float EXR, rows from the top: (r, g, b) per texel, top-left first.
-    std::string write_exr(const std::string &name, const std::array<RGB, 4> &texels) {
+    // A 2x2 half-float EXR, rows from the top: (r, g, b) per texel, top-left first; with an alpha
+    // channel when alpha is given.
+    std::string write_exr(const std::string &name, const std::array<RGB, 4> &texels,
+                          const std::array<float, 4> *alpha = nullptr) {
         const std::string path = (dir_ / name).string();
         Imf::Rgba pixels[4];
-        for (int i = 0; i < 4; ++i) pixels[i] = Imf::Rgba(texels[i].r, texels[i].g, texels[i].b, 1);
-        Imf::RgbaOutputFile file(path.c_str(), 2, 2, Imf::WRITE_RGB);
+        for (int i = 0; i < 4; ++i) pixels[i] = Imf::Rgba(texels[i].r, texels[i].g, texels[i].b, alpha ? (*alpha)[i] : 1);
+        Imf::RgbaOutputFile file(path.c_str(), 2, 2, alpha ? Imf::WRITE_RGBA : Imf::WRITE_RGB);
         file.setFrameBuffer(pixels, 1, 2);
         file.writePixels(2);
+        return path;
+    }
+    // A 2x2 8-bit PNG with `channels` channels (2: grey and alpha, 4: RGBA), rows from the top,
+    // written by hand so that the colour is stored as given, not multiplied by alpha.
+    std::string write_png(const std::string &name, int channels, const std::vector<uint8_t> &texels) {
+        const std::string path = (dir_ / name).string();
+        std::vector<uint8_t> raw;
+        for (int y = 0; y < 2; ++y) {
+            raw.push_back(0); // no filter
+            raw.insert(raw.end(), texels.begin() + y * 2 * channels, texels.begin() + (y + 1) * 2 * channels);
+        }
+        uLongf size = compressBound(uLong(raw.size()));
+        std::vector<uint8_t> packed(size);
+        compress(packed.data(), &size, raw.data(), uLong(raw.size()));
+        packed.resize(size);
+        std::FILE *f = std::fopen(path.c_str(), "wb");
+        auto u32 = [&](uint32_t v) {
+            const uint8_t b[4] = {uint8_t(v >> 24), uint8_t(v >> 16), uint8_t(v >> 8), uint8_t(v)};
+            std::fwrite(b, 1, 4, f);
+        };
+        auto chunk = [&](const char *kind, const std::vector<uint8_t> &data) {
+            u32(uint32_t(data.size()));
+            std::vector<uint8_t> body(kind, kind + 4);
+            body.insert(body.end(), data.begin(), data.end());
+            std::fwrite(body.data(), 1, body.size(), f);
+            u32(uint32_t(crc32(0, body.data(), uInt(body.size()))));
+        };
+        const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+        std::fwrite(signature, 1, 8, f);
+        chunk("IHDR", {0, 0, 0, 2, 0, 0, 0, 2, 8, uint8_t(channels == 2 ? 4 : 6), 0, 0, 0});
+        chunk("IDAT", packed);
+        chunk("IEND", {});
+        std::fclose(f);
         return path;
     }
     FloatTexturePtr float_texture(std::vector<ParsedParameter> params) {
@@ -64,8 +102,9 @@ class ImageTextureTest : public ::testing::Test {
     SampledWavelengths lambda_ = SampledWavelengths::sample_visible(0.3f);
 };
 
-// Texel values 0.25 (top left), 0.5 (top right), 0.75 (bottom left), 1 (bottom right) in red.
-const std::array<RGB, 4> Ramp = {RGB{0.25f, 0, 0}, RGB{0.5f, 0, 0}, RGB{0.75f, 0, 0}, RGB{1, 0, 0}};
+// Grey texel values 0.25 (top left), 0.5 (top right), 0.75 (bottom left), 1 (bottom right).
+const std::array<RGB, 4> Ramp = {RGB{0.25f, 0.25f, 0.25f}, RGB{0.5f, 0.5f, 0.5f}, RGB{0.75f, 0.75f, 0.75f},
+                                 RGB{1, 1, 1}};
 
 TEST_F(ImageTextureTest, BilinearLookupsWithTUpwards) {
     auto tex = float_texture({strings("string", "filename", {write_exr("ramp.exr", Ramp)}, 2)});
@@ -135,9 +174,46 @@ TEST_F(ImageTextureTest, SpectrumKindsAndChannels) {
         EXPECT_NEAR(u[i], expected_u[i], 2e-3f);
         EXPECT_NEAR(e[i], expected_e[i], 2e-3f * expected_e[i] + 1e-4f);
     }
-    // A float texture reads the first channel (red).
-    auto first = float_texture({strings("string", "filename", {file}, 2)});
+}
+
+// A float texture reads a colour file as pbrt-v4's MIP maps do: "bilinear" (and "trilinear") the
+// mean of R, G and B, or the alpha channel when it is not 1 everywhere (a cut-out's alpha map);
+// "point" (and "ewa") the first channel.
+TEST_F(ImageTextureTest, FloatTexturesReadTheMeanOrTheAlphaOfColourFiles) {
+    const std::array<RGB, 4> colours = {RGB{0.8f, 0.4f, 0.2f}, RGB{0.1f, 0.5f, 0.9f}, RGB{2, 1, 0.5f}, RGB{0, 0, 0}};
+    const std::string opaque = write_exr("colours.exr", colours);
+    auto mean = float_texture({strings("string", "filename", {opaque}, 2)});
+    EXPECT_NEAR(mean->evaluate(at_st(0.25f, 0.75f)), (0.8f + 0.4f + 0.2f) / 3, 1e-3f);
+    auto first = float_texture({strings("string", "filename", {opaque}, 2), strings("string", "filter", {"point"}, 3)});
     EXPECT_NEAR(first->evaluate(at_st(0.25f, 0.75f)), 0.8f, 1e-3f);
+    const std::array<float, 4> alpha = {0, 0.25f, 1, 0.5f};
+    const std::string cut = write_exr("cut.exr", colours, &alpha);
+    auto alpha_map = float_texture({strings("string", "filename", {cut}, 2)});
+    EXPECT_NEAR(alpha_map->evaluate(at_st(0.25f, 0.75f)), 0, 1e-3f);
+    EXPECT_NEAR(alpha_map->evaluate(at_st(0.75f, 0.75f)), 0.25f, 1e-3f);
+    EXPECT_NEAR(alpha_map->evaluate(at_st(0.25f, 0.25f)), 1, 1e-3f);
+    const std::array<float, 4> ones = {1, 1, 1, 1};
+    auto all_one = float_texture({strings("string", "filename", {write_exr("ones.exr", colours, &ones)}, 2)});
+    EXPECT_NEAR(all_one->evaluate(at_st(0.25f, 0.75f)), (0.8f + 0.4f + 0.2f) / 3, 1e-3f);
+}
+
+// An RGBA PNG's colour is read as stored (pbrt-v4 does not multiply it by alpha), its alpha,
+// sRGB-decoded like the colour, is what a float texture reads, and a grey PNG's alpha is dropped
+// (pbrt-v4 reads such a file as grey).
+TEST_F(ImageTextureTest, PngAlphaIsNotMultipliedIn) {
+    const std::vector<uint8_t> rgba = {200, 100, 50, 128, 10, 20, 30, 0, 255, 255, 255, 255, 0, 0, 0, 255};
+    const std::string file = write_png("rgba.png", 4, rgba);
+    auto colour = spectrum_texture({strings("string", "filename", {file}, 2)}, SpectrumType::Unbounded);
+    const SampledSpectrum c = colour->evaluate(at_st(0.25f, 0.75f), lambda_);
+    const RGB stored{srgb_to_linear(200 / 255.f), srgb_to_linear(100 / 255.f), srgb_to_linear(50 / 255.f)};
+    const SampledSpectrum expected = RGBUnboundedSpectrum(RGBColorSpace::srgb(), stored).sample(lambda_);
+    for (int i = 0; i < NumWavelengths; ++i) EXPECT_NEAR(c[i], expected[i], 2e-3f * expected[i]);
+    auto alpha = float_texture({strings("string", "filename", {file}, 2)});
+    EXPECT_NEAR(alpha->evaluate(at_st(0.25f, 0.75f)), srgb_to_linear(128 / 255.f), 1e-4f);
+    EXPECT_NEAR(alpha->evaluate(at_st(0.75f, 0.75f)), 0, 1e-6f);
+    const std::string grey = write_png("grey-alpha.png", 2, {100, 0, 150, 64, 200, 128, 250, 255});
+    auto y = float_texture({strings("string", "filename", {grey}, 2)});
+    EXPECT_NEAR(y->evaluate(at_st(0.25f, 0.75f)), srgb_to_linear(100 / 255.f), 1e-4f);
 }
 
 // 8-bit files are decoded by "encoding": sRGB by default, or linear, or a gamma.

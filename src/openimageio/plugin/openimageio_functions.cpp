@@ -23,7 +23,10 @@ bool is_float_format(OIIO::TypeDesc t) {
 }
 
 std::string read_image(const std::string &path, DecodedImage *image) {
-    auto in = OIIO::ImageInput::open(path);
+    // Colours as stored, not multiplied by alpha, as pbrt-v4 reads them.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
         std::string why = OIIO::geterror();
         return why.empty() ? "unreadable" : why;
