@@ -93,7 +93,7 @@ TEST(AutoIntegrator, ChoosesSppmForCausticsSeenByACameraWithoutImportance) {
     const std::string text = caustica::testing::read_text(caustica::testing::data_path("reference/glass-sphere.pbrt"));
     const std::string perspective = "Camera \"perspective\" \"float fov\" [ 40 ]";
     ASSERT_NE(text.find(perspective), std::string::npos);
-    for (const std::string camera :
+    for (const std::string &camera :
          {std::string("Camera \"spherical\" \"string mapping\" \"equirectangular\""),
           "Camera \"realistic\" \"string lensfile\" \"" + lens + "\" \"float focusdistance\" 5"}) {
         std::string with_camera = text;

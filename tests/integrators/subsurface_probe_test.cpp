@@ -218,7 +218,9 @@ TEST(SubsurfaceProbe, SphereThroughTheScene) {
     auto group = std::make_shared<ShapeGroup>();
     group->type = "sphere";
     group->analytic = sphere;
-    scene.geometry.add(group, PrimitiveAttributes{&material, nullptr, {}});
+    PrimitiveAttributes attributes;
+    attributes.material = &material;
+    scene.geometry.add(group, attributes);
     scene.geometry.commit();
     SurfaceInteraction entry;
     ASSERT_TRUE(scene.intersect(Ray{{0, 0, 3}, {0, 0, -1}}, &entry));
