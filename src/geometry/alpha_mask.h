@@ -21,7 +21,7 @@ class AlphaMask {
   public:
     explicit AlphaMask(FloatTexturePtr alpha) : alpha_(std::move(alpha)) {}
 
-    // Whether the surface at ctx stops a ray whose uniform number (ray_uniform below) is u.
+    // Whether the surface at ctx stops a ray whose uniform number (uniform() below) is u.
     // As pbrt-v4: stopped when alpha >= 1, passed when alpha <= 0, else stopped when u <= alpha.
     bool stops(const TextureEvalContext &ctx, float u) const {
         const float a = alpha_->evaluate(ctx);

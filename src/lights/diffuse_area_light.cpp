@@ -40,14 +40,14 @@ bool DiffuseAreaLight::masked(const ShapeSample &s) const {
     return !alpha_->stops(ctx, AlphaMask::uniform(s.p.x, s.p.y, s.p.z));
 }
 
-// Unlike pbrt-v4, L does not apply the mask again: a ray that reached the point has already met
-// it (GeometryScene), and a second, independent test would make a partly transparent emitter
-// appear with alpha^2 of its radiance to rays and alpha to light sampling.
 SampledSpectrum DiffuseAreaLight::emitted(const float *rgb, const SampledWavelengths &lambda) {
     const RGB clamped{std::max(rgb[0], 0.f), std::max(rgb[1], 0.f), std::max(rgb[2], 0.f)};
     return RGBIlluminantSpectrum(RGBColorSpace::srgb(), clamped).sample(lambda);
 }
 
+// Unlike pbrt-v4, L does not apply the alpha mask again: a ray that reached the point has already
+// met it (GeometryScene), and a second, independent test would make a partly transparent emitter
+// appear with alpha^2 of its radiance to rays and alpha to light sampling.
 SampledSpectrum DiffuseAreaLight::L(Vec3f, Vec3f n, Vec2f uv, Vec3f w,
                                     const SampledWavelengths &lambda) const {
     if (!two_sided_ && dot(n, w) < 0) return {};
