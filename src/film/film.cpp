@@ -1,6 +1,7 @@
 #include "film/film.h"
 
 #include "spectral/camera_sensor_data.h"
+#include "spectral/named_spectra.h"
 
 #include <cassert>
 #include <cmath>
@@ -319,9 +320,8 @@ std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictio
     try {
         const float imaging_ratio = exposure_time * iso / 100;
         if (camera_sensor)
-            sensor.emplace(output, *PiecewiseLinearSpectrum::from_interleaved(camera_sensor->r, false),
-                           *PiecewiseLinearSpectrum::from_interleaved(camera_sensor->g, false),
-                           *PiecewiseLinearSpectrum::from_interleaved(camera_sensor->b, false), white_balance,
+            sensor.emplace(output, *get_named_spectrum(sensor_name + "_r"), *get_named_spectrum(sensor_name + "_g"),
+                           *get_named_spectrum(sensor_name + "_b"), white_balance,
                            imaging_ratio);
         else
             sensor.emplace(output, white_balance, imaging_ratio);
