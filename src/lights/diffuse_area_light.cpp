@@ -1,14 +1,12 @@
 #include "lights/diffuse_area_light.h"
 
 #include "core/sampling.h"
-#include "spectral/color_space.h"
-#include "spectral/rgb_spectrum.h"
 
 namespace caustica {
 
 DiffuseAreaLight::DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumPtr radiance,
                                    float scale, bool two_sided, std::shared_ptr<const AlphaMask> alpha,
-                                   std::shared_ptr<const RGBImage> image)
+                                   std::shared_ptr<const EmissionImage> image)
     : shape_(std::move(shape)),
       alpha_(std::move(alpha)),
       image_(std::move(image)),
@@ -20,14 +18,7 @@ DiffuseAreaLight::DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumP
 SampledSpectrum DiffuseAreaLight::phi(const SampledWavelengths &lambda) const {
     // Radiance integrated over the hemisphere (pi) and the area, per emitting side; an image's
     // radiance averaged over its pixels (as if it covered the shape evenly, as pbrt-v4 assumes).
-    SampledSpectrum radiance(0.f);
-    if (image_) {
-        for (int y = 0; y < image_->height; ++y)
-            for (int x = 0; x < image_->width; ++x) radiance += emitted(image_->at(x, y), lambda);
-        radiance = radiance * (1 / (float(image_->width) * float(image_->height)));
-    } else {
-        radiance = radiance_->sample(lambda);
-    }
+    const SampledSpectrum radiance = image_ ? image_->mean_radiance(lambda) : radiance_->sample(lambda);
     return Pi * (two_sided_ ? 2.f : 1.f) * area_ * scale_ * radiance;
 }
 
@@ -40,22 +31,13 @@ bool DiffuseAreaLight::masked(const ShapeSample &s) const {
     return !alpha_->stops(ctx, AlphaMask::uniform(s.p.x, s.p.y, s.p.z));
 }
 
-SampledSpectrum DiffuseAreaLight::emitted(const float *rgb, const SampledWavelengths &lambda) {
-    const RGB clamped{std::max(rgb[0], 0.f), std::max(rgb[1], 0.f), std::max(rgb[2], 0.f)};
-    return RGBIlluminantSpectrum(RGBColorSpace::srgb(), clamped).sample(lambda);
-}
-
 // Unlike pbrt-v4, L does not apply the alpha mask again: a ray that reached the point has already
 // met it (GeometryScene), and a second, independent test would make a partly transparent emitter
 // appear with alpha^2 of its radiance to rays and alpha to light sampling.
 SampledSpectrum DiffuseAreaLight::L(Vec3f, Vec3f n, Vec2f uv, Vec3f w,
                                     const SampledWavelengths &lambda) const {
     if (!two_sided_ && dot(n, w) < 0) return {};
-    if (image_) {
-        const RGB rgb = image_->bilerp({uv.x, 1 - uv.y});
-        const float values[3] = {rgb.r, rgb.g, rgb.b};
-        return scale_ * emitted(values, lambda);
-    }
+    if (image_) return scale_ * image_->radiance(uv, lambda);
     return scale_ * radiance_->sample(lambda);
 }
 

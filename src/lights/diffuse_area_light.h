@@ -1,15 +1,14 @@
 // Diffuse area light: radiance scale * L leaving every point of a shape, on the side of its
-// (oriented) normal, or on both sides when two-sided. L is one spectrum, or, with an emission
-// image (pbrt-v4's "filename"), the RGB illuminant spectrum of the image's sRGB value at the
-// point's uv (v flipped, bilinear, as pbrt-v4). A shape with an alpha cut-out emits
+// (oriented) normal, or on both sides when two-sided. L is one spectrum, or an emission image's
+// (pbrt-v4's "filename", lights/emission_image.h). A shape with an alpha cut-out emits
 // only where it is there: points that the mask removes are never sampled as emitting, and rays
 // pass them without seeing their emission (geometry/alpha_mask.h).
 #pragma once
 
 #include "geometry/alpha_mask.h"
 #include "geometry/shape.h"
+#include "lights/emission_image.h"
 #include "lights/light.h"
-#include "lights/rgb_image.h"
 #include "spectral/spectrum.h"
 
 #include <memory>
@@ -20,7 +19,7 @@ class DiffuseAreaLight final : public Light {
   public:
     DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumPtr radiance, float scale,
                      bool two_sided, std::shared_ptr<const AlphaMask> alpha = nullptr,
-                     std::shared_ptr<const RGBImage> image = nullptr);
+                     std::shared_ptr<const EmissionImage> image = nullptr);
 
     LightType type() const override { return LightType::Area; }
     const Spectrum *emission_spectrum() const override { return image_ ? nullptr : radiance_.get(); }
@@ -44,12 +43,10 @@ class DiffuseAreaLight final : public Light {
     // Whether the alpha mask removes the sampled point (decided by a hash of the point, as
     // pbrt-v4 does).
     bool masked(const ShapeSample &s) const;
-    // The illuminant spectrum of an image's linear sRGB value (negative components clamped).
-    static SampledSpectrum emitted(const float *rgb, const SampledWavelengths &lambda);
 
     std::shared_ptr<const Shape> shape_;
     std::shared_ptr<const AlphaMask> alpha_;
-    std::shared_ptr<const RGBImage> image_;
+    std::shared_ptr<const EmissionImage> image_;
     float area_;
     SpectrumPtr radiance_;
     float scale_;

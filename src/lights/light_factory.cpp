@@ -268,19 +268,13 @@ std::vector<LightPtr> create_area_lights(const std::string &type, const Paramete
         throw InputError(params.location("filename"), "both \"L\" and \"filename\" given for a diffuse area light");
     // An emission image (sRGB values) or a spectrum; either way "scale" 1 means the colour
     // space's white at 1 nit.
-    std::shared_ptr<const RGBImage> image;
-    if (!filename.empty()) image = std::make_shared<RGBImage>(read_light_image(params, filename));
+    std::shared_ptr<const EmissionImage> image;
+    if (!filename.empty()) image = std::make_shared<EmissionImage>(read_light_image(params, filename));
     SpectrumPtr L = light_spectrum(params, "L");
     float scale = photometric_scale(read_scale(params), *L);
     bool two_sided = params.get_one_bool("twosided", false);
     float power = params.get_one_float("power", -1);
-    // The image's mean luminance (pbrt-v4 takes it in the image's colour space: sRGB here).
-    float image_luminance = 1;
-    if (image) {
-        const RGB mean = image->average();
-        const auto &y = RGBColorSpace::srgb().xyz_from_rgb_matrix()[1];
-        image_luminance = y[0] * mean.r + y[1] * mean.g + y[2] * mean.b;
-    }
+    const float image_luminance = image ? image->mean_luminance() : 1;
     SpectrumPtr radiance = tabulated(L);  // shared by all the shapes' lights
     std::vector<LightPtr> lights;
     lights.reserve(shapes.size());
