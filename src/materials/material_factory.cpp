@@ -7,6 +7,7 @@
 #include "materials/diffuse_material.h"
 #include "materials/diffuse_transmission_material.h"
 #include "materials/disney_material.h"
+#include "materials/hair_material.h"
 #include "materials/mix_material.h"
 #include "materials/shading_perturbation.h"
 #include "params/constant_textures.h"
@@ -22,7 +23,7 @@ namespace caustica {
 
 namespace {
 
-constexpr std::array UnsupportedMaterials = {"measured", "hair", "subsurface"};
+constexpr std::array UnsupportedMaterials = {"measured", "subsurface"};
 
 std::string quoted(const std::string &s) { return "\"" + s + "\""; }
 
@@ -239,6 +240,57 @@ SpectrumTexturePtr read_reflectance(const ParameterDictionary &params, const Nam
                                        SpectrumType::Albedo, textures);
 }
 
+// pbrt-v4's "hair": the absorption from "sigma_a", else "reflectance" or "color", else the
+// melanin concentrations, else eumelanin 1.3; the sources not used are named in a warning, as
+// pbrt-v4 does. pbrt-v4 clamps beta_m and beta_n to [0.01, 1] where it evaluates them, and so
+// does HairMaterial; negative values are errors here.
+MaterialPtr create_hair(const ParameterDictionary &params, const NamedTextures &textures, const SourceLocation &loc) {
+    HairMaterial::Absorption a;
+    a.sigma_a = params.get_spectrum_texture_or_null("sigma_a", SpectrumType::Unbounded, textures);
+    std::string color_name = "reflectance";
+    a.color = params.get_spectrum_texture_or_null(color_name, SpectrumType::Albedo, textures);
+    if (!a.color) {
+        color_name = "color";
+        a.color = params.get_spectrum_texture_or_null(color_name, SpectrumType::Albedo, textures);
+    }
+    a.eumelanin = params.get_float_texture_or_null("eumelanin", textures);
+    a.pheomelanin = params.get_float_texture_or_null("pheomelanin", textures);
+    auto ignoring = [&](const std::string &ignored, const std::string &used) {
+        warning(loc, "ignoring " + quoted(ignored) + " since " + used + " is given");
+    };
+    if (a.sigma_a) {
+        check_spectrum_texture(params, "sigma_a", a.sigma_a, true, "a non-negative absorption coefficient");
+        if (a.color) ignoring(color_name, quoted("sigma_a"));
+        if (a.eumelanin) ignoring("eumelanin", quoted("sigma_a"));
+        if (a.pheomelanin) ignoring("pheomelanin", quoted("sigma_a"));
+        a.color = nullptr, a.eumelanin = a.pheomelanin = nullptr;
+    } else if (a.color) {
+        check_spectrum_texture(params, color_name, a.color, true, "non-negative");
+        if (a.eumelanin) ignoring("eumelanin", quoted(color_name));
+        if (a.pheomelanin) ignoring("pheomelanin", quoted(color_name));
+        a.eumelanin = a.pheomelanin = nullptr;
+    } else if (a.eumelanin || a.pheomelanin) {
+        if (a.eumelanin) check_non_negative_texture(params, "eumelanin", a.eumelanin);
+        if (a.pheomelanin) check_non_negative_texture(params, "pheomelanin", a.pheomelanin);
+    } else {
+        // Brown hair.
+        a.eumelanin = std::make_shared<ConstantFloatTexture>(1.3f);
+    }
+
+    FloatTexturePtr eta = params.get_float_texture("eta", 1.55f, textures);
+    if (const float *e = eta->constant_value(); e && !(*e > 0 && std::isfinite(*e)))
+        throw InputError(params.location("eta"), "\"eta\" must be a positive index of refraction, not " +
+                                                     std::to_string(*e));
+    FloatTexturePtr beta_m = params.get_float_texture("beta_m", 0.3f, textures);
+    check_non_negative_texture(params, "beta_m", beta_m);
+    FloatTexturePtr beta_n = params.get_float_texture("beta_n", 0.3f, textures);
+    check_non_negative_texture(params, "beta_n", beta_n);
+    FloatTexturePtr alpha = params.get_float_texture("alpha", 2.f, textures);
+    if (const float *v = alpha->constant_value(); v && !std::isfinite(*v))
+        throw InputError(params.location("alpha"), "\"alpha\" must be a finite angle in degrees");
+    return std::make_shared<HairMaterial>(std::move(a), eta, beta_m, beta_n, alpha);
+}
+
 // pbrt-v4's "normalmap" (an image file) or "displacement" (a float texture); the normal map
 // wins when both are given, as in pbrt-v4.
 std::shared_ptr<const ShadingPerturbation> read_shading_perturbation(const ParameterDictionary &params,
@@ -295,6 +347,8 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
                                                         read_film(params, textures));
     } else if (type == "disney") {
         material = create_disney_material(params, textures, read_ior(params), read_interior_absorption(params));
+    } else if (type == "hair") {
+        material = create_hair(params, textures, loc);
     } else if (type == "thindielectric") {
         material = std::make_shared<ThinDielectricMaterial>(read_ior(params));
     } else if (std::find(UnsupportedMaterials.begin(), UnsupportedMaterials.end(), type) !=
