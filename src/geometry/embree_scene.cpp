@@ -2,7 +2,9 @@
 
 #include "core/error.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -13,10 +15,20 @@ namespace caustica {
 struct EmbreeCallbackData {
     const TriangleMesh *mesh;
     const AnalyticShape *analytic;
+    const CurveSet *curves;
     const AlphaMask *alpha;
 };
 
+// A query's Embree context, with the ray's extent as the query began, which the curves' filter
+// needs (Embree gives filters only the distance of the hit they judge).
+struct QueryContext {
+    RTCIntersectContext embree;
+    float t_max;
+};
+
 namespace {
+
+constexpr unsigned CurveTessellationRate = 16;
 
 // Embree reports errors through this callback; build steps then check rtcGetDeviceError.
 void report_embree_error(void *, RTCError code, const char *message) {
@@ -116,6 +128,54 @@ void mesh_alpha_filter(const RTCFilterFunctionNArguments *args) {
     }
 }
 
+// Embree's intersection and occlusion filter for curves. A curve stands for a thin tube, which
+// a ray that leaves its surface, or arrives at it, meets nowhere else nearby. The ray-facing
+// ribbon that takes its place for each ray does not know this: a ray leaving a point of the
+// curve nearly along it, or one arriving so, stays within the width and meets the ribbon again
+// (about 1% of the directions from a straight fibre). So a hit is dropped when an end of the ray
+// lies within the curve's width of the line that touches its centre line at the hit. (pbrt-v4
+// offsets such rays, and their targets, by up to 1.7 widths instead: its curves' error bound.)
+// Then the hits outside a ribbon (CurveSet::covers), and those that the alpha mask lets pass,
+// are dropped.
+void curve_filter(const RTCFilterFunctionNArguments *args) {
+    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
+    const float t_max = reinterpret_cast<const QueryContext *>(args->context)->t_max;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const int segment = int(RTCHitN_primID(args->hit, args->N, i));
+        const float u = std::clamp(RTCHitN_u(args->hit, args->N, i), 0.f, 1.f);
+        const float t = RTCRayN_tfar(args->ray, args->N, i);
+        const Vec3f o = ray_origin(args->ray, args->N, i), d = ray_direction(args->ray, args->N, i);
+        // In the space the curves live in (an instance's, if instanced), as the width is.
+        Vec3f tangent;
+        const Vec3f centre = data.curves->render_point(segment, u, &tangent);
+        const float width = data.curves->render_width(segment, u);
+        const auto near_tangent = [&](Vec3f p) {
+            const Vec3f offset = p - centre;
+            return length(offset - tangent * dot(offset, tangent)) < width;
+        };
+        const bool leaves = near_tangent(o), arrives = std::isfinite(t_max) && near_tangent(o + d * t_max);
+        if (leaves || arrives || !data.curves->covers(segment, u, o, d, t)) {
+            args->valid[i] = 0;
+            continue;
+        }
+        if (!data.alpha) continue;
+        Ray ray;
+        ray.o = o;
+        ray.d = d;
+        SurfaceInteraction si;
+        data.curves->interaction(segment, u, ray, t, &si);
+        if (passes(*data.alpha, o, d, t, si)) args->valid[i] = 0;
+    }
+}
+
+// Embree's buffer of count elements of element_size bytes for geometry, filled from data.
+void set_buffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, const void *data,
+                size_t element_size, size_t count) {
+    void *buffer = rtcSetNewGeometryBuffer(geometry, type, 0, format, element_size, count);
+    if (buffer) std::memcpy(buffer, data, element_size * count);
+}
+
 // Moves a surface record from an instance's space to render space.
 void transform_interaction(const Transform &render_from_instance, SurfaceInteraction *si) {
     si->p = render_from_instance.apply_point(si->p);
@@ -171,11 +231,11 @@ void GeometryScene::check_device(const char *what) const {
 
 void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group,
                            const AlphaMask *alpha) {
-    // Only analytic shapes and cut-outs have callbacks.
+    // Only analytic shapes, curves and cut-outs have callbacks.
     void *callback_data = nullptr;
-    if (group.analytic || alpha) {
+    if (group.analytic || group.curves || alpha) {
         callback_data_.push_back(std::make_unique<EmbreeCallbackData>(
-            EmbreeCallbackData{group.mesh.get(), group.analytic.get(), alpha}));
+            EmbreeCallbackData{group.mesh.get(), group.analytic.get(), group.curves.get(), alpha}));
         callback_data = callback_data_.back().get();
     }
     RTCGeometry geometry;
@@ -193,6 +253,21 @@ void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGrou
             rtcSetGeometryIntersectFilterFunction(geometry, mesh_alpha_filter);
             rtcSetGeometryOccludedFilterFunction(geometry, mesh_alpha_filter);
         }
+    } else if (group.curves) {
+        const CurveSet &curves = *group.curves;
+        geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE);
+        const size_t segments = size_t(curves.segment_count());
+        set_buffer(geometry, RTC_BUFFER_TYPE_VERTEX, RTC_FORMAT_FLOAT4, curves.embree_vertices().data(),
+                   4 * sizeof(float), 4 * segments);
+        std::vector<unsigned> first_vertex(segments);
+        for (size_t i = 0; i < segments; ++i) first_vertex[i] = unsigned(4 * i);
+        set_buffer(geometry, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT, first_vertex.data(), sizeof(unsigned), segments);
+        // Flat curves are ray-facing quads along the curve, CurveTessellationRate per segment
+        // (Embree's default of 4 shows the corners of tight bends in close-ups).
+        rtcSetGeometryTessellationRate(geometry, CurveTessellationRate);
+        rtcSetGeometryUserData(geometry, callback_data);
+        rtcSetGeometryIntersectFilterFunction(geometry, curve_filter);
+        rtcSetGeometryOccludedFilterFunction(geometry, curve_filter);
     } else {
         geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(geometry, 1);
@@ -211,7 +286,7 @@ void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGrou
 
 void GeometryScene::add(std::shared_ptr<const ShapeGroup> group, PrimitiveAttributes attributes) {
     if (committed_) throw std::logic_error("GeometryScene::add after commit");
-    if (!group || (!group->mesh && !group->analytic)) return;
+    if (!group || group->empty()) return;
     attach(scene_, unsigned(slots_.size()), *group, attributes.alpha.get());
     slots_.push_back({Primitive{std::move(group), std::move(attributes)}, -1});
 }
@@ -221,7 +296,7 @@ int GeometryScene::add_prototype(
     if (committed_) throw std::logic_error("GeometryScene::add_prototype after commit");
     Prototype prototype{new_scene(), {}};
     for (auto &[group, attributes] : shapes) {
-        if (!group || (!group->mesh && !group->analytic)) continue;
+        if (!group || group->empty()) continue;
         attach(prototype.scene, unsigned(prototype.primitives.size()), *group, attributes.alpha.get());
         prototype.primitives.push_back({std::move(group), std::move(attributes)});
     }
@@ -264,7 +339,7 @@ void GeometryScene::add_instance(int prototype, const AnimatedTransform &render_
 
 void GeometryScene::add_moving(std::shared_ptr<const ShapeGroup> group, PrimitiveAttributes attributes,
                                const AnimatedTransform &render_from_object) {
-    if (!group || (!group->mesh && !group->analytic)) return;
+    if (!group || group->empty()) return;
     std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> shape;
     shape.emplace_back(std::move(group), std::move(attributes));
     add_instance(add_prototype(std::move(shape)), render_from_object);
@@ -290,8 +365,9 @@ void GeometryScene::commit() {
 }
 
 bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    QueryContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.t_max = ray.t_max;
     RTCRayHit rayhit;
     rayhit.ray.org_x = ray.o.x;
     rayhit.ray.org_y = ray.o.y;
@@ -309,7 +385,7 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
         rayhit.hit.instID[l] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene_, &context, &rayhit);
+    rtcIntersect1(scene_, &context.embree, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
 
     const Primitive *primitive;
@@ -345,6 +421,8 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
         float u = rayhit.hit.u, v = rayhit.hit.v;
         float b[3] = {std::max(0.f, 1 - u - v), u, v};
         group.mesh->interaction(int(index), b, si);
+    } else if (group.curves) {
+        group.curves->interaction(int(index), rayhit.hit.u, local, t, si);
     } else {
         *si = group.analytic->interaction(local, t);
     }
@@ -365,8 +443,8 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
 }
 
 bool GeometryScene::occluded(const Ray &ray) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    QueryContext context;
+    rtcInitIntersectContext(&context.embree);
     RTCRay r;
     r.org_x = ray.o.x;
     r.org_y = ray.o.y;
@@ -377,11 +455,12 @@ bool GeometryScene::occluded(const Ray &ray) const {
     r.tnear = 0;
     // Embree's interval is closed; stop one float short of t_max to make it open.
     r.tfar = std::nextafter(ray.t_max, 0.f);
+    context.t_max = r.tfar;
     r.time = moving_instances_ > 0 ? times_.fraction(ray.time) : 0.f;
     r.mask = ~0u;
     r.id = 0;
     r.flags = 0;
-    rtcOccluded1(scene_, &context, &r);
+    rtcOccluded1(scene_, &context.embree, &r);
     return r.tfar < 0;
 }
 

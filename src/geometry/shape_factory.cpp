@@ -205,10 +205,16 @@ std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
     if (type == "disk") return create_disk(render_from_object, reverse_orientation, params, loc);
     if (type == "cylinder")
         return create_cylinder(render_from_object, reverse_orientation, params, loc);
+    if (type == "curve") {
+        auto group = std::make_shared<ShapeGroup>();
+        group->type = "curve";
+        group->curves = create_curves(render_from_object, reverse_orientation, params);
+        return group;
+    }
     // pbrt-v4's other shapes, and pbrt-v3's quadrics that v4 dropped.
     if (type == "loopsubdiv")
         return create_loop_subdivision(render_from_object, reverse_orientation, params, loc);
-    for (const char *unsupported : {"curve", "cone", "paraboloid",
+    for (const char *unsupported : {"cone", "paraboloid",
                                     "hyperboloid", "heightfield", "nurbs"})
         if (type == unsupported) {
             warning(loc, "shape \"" + type + "\" is not supported; skipped");

@@ -11,9 +11,9 @@
 namespace caustica {
 
 // "trianglemesh", "plymesh" (file relative to the scene's directory; .ply.gz accepted),
-// "bilinearmesh" (as triangles), "sphere" and "disk". Shapes pbrt knows that we do not render
-// ("loopsubdiv", "curve", "cylinder", and pbrt-v3's quadrics) give a warning naming them and
-// nullptr; unknown names are an InputError. Parameters are read from params, whose unread ones the
+// "bilinearmesh" (as triangles), "loopsubdiv", "sphere", "disk", "cylinder" and "curve".
+// pbrt-v3's quadrics, which pbrt-v4 dropped, give a warning naming them and nullptr; unknown
+// names are an InputError. Parameters are read from params, whose unread ones the
 // caller reports.
 std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
                                          const Transform &render_from_object,

@@ -23,6 +23,7 @@ Bounds3f ShapeGroup::bounds() const {
     Bounds3f b;
     if (analytic) b.expand(analytic->bounds());
     if (mesh) b.expand(mesh->bounds());
+    if (curves) b.expand(curves->bounds());
     return b;
 }
 

@@ -35,6 +35,10 @@ struct SceneFeatures {
     bool emissive_media = false;         // a medium emits (Le or temperature)
     bool medium_boundaries = false;      // shapes without a material, which rays pass through
     bool subsurface = false;
+    // Curves are pbrt-v4's ray-facing ribbons: each ray sees one turned towards it, so light
+    // paths meet other surfaces than camera paths do, and only pt renders them as pbrt-v4's
+    // path tracer does (geometry/curves.h).
+    bool curves = false;
     SceneProbe probe;                    // what camera and lights see (scene_probe.h)
     bool absorbing_interiors = false;
     // Every material and medium scatters all wavelengths alike, and every light emits the same

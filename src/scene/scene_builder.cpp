@@ -241,7 +241,10 @@ void add_shapes(const SceneDescription &d, const NamedTextures &textures, const 
         attrs.material = material_for(s, materials);
         attrs.medium_interface = interface_for(s, media, scene);
         scene.features.medium_boundaries |= attrs.material == nullptr;
+        scene.features.curves |= group->curves != nullptr;
         if (s.area_light_index >= 0) {
+            // pbrt-v4 cannot sample points on curves either (Curve::Sample aborts).
+            if (group->curves) throw InputError(s.loc, "curves cannot be area lights");
             const SceneEntity &area = d.area_lights.at(s.area_light_index);
             for (LightPtr &light :
                  create_area_lights(area.type, area.params, group->shapes(), area.loc, attrs.alpha)) {
@@ -276,6 +279,7 @@ void add_instances(const SceneDescription &d, const NamedTextures &textures,
             attrs.material = material_for(s, materials);
             attrs.medium_interface = interface_for(s, media, scene);
             scene.features.medium_boundaries |= attrs.material == nullptr;
+            scene.features.curves |= group->curves != nullptr;
             scene.triangle_count += group->triangle_count();
             scene.shape_groups.push_back(group);
             members.emplace_back(std::move(group), std::move(attrs));
@@ -365,6 +369,9 @@ std::string percent(float fraction) { return std::to_string(int(std::lround(100 
 } // namespace
 
 IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool camera_models_importance) {
+    if (features.curves)
+        return {"pt", "the scene has curves, which camera paths alone see as pbrt-v4 does (ray-facing "
+                      "ribbons, turned towards each ray)"};
     if (!features.caustic_paths)
         return {"pt", "no specular surface can focus light onto a diffuse one, so camera paths with "
                       "light sampling find every path; path tracing is the cheapest per sample"};
@@ -450,6 +457,11 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
         scene->integrator_reason = choice.reason;
         note("--integrator auto chose " + choice.name + ": " + choice.reason);
     }
+    if (scene->features.curves && scene->integrator_name != "pt")
+        warning("curves are ray-facing ribbons (pbrt-v4's model): light paths meet them turned "
+                "towards themselves, not towards the camera, so " + scene->integrator_name +
+                " renders them a few percent differently from pt and pbrt-v4's path tracer "
+                "(pbrt-v4's own bdpt and lightpath differ likewise); use pt for scenes with curves");
     return scene;
 }
 

@@ -104,3 +104,14 @@ TEST(AutoIntegrator, ChoosesSppmForCausticsSeenByACameraWithoutImportance) {
         EXPECT_EQ(scene->integrator_name, "sppm") << camera;
     }
 }
+
+// Curves are seen as pbrt-v4 sees them by camera paths only: auto takes the path tracer even
+// where caustic paths would call for vcm (the glass sphere with a hair on its floor).
+TEST(AutoIntegrator, ChoosesThePathTracerForCurves) {
+    std::string text = caustica::testing::read_text(caustica::testing::data_path("reference/glass-sphere.pbrt"));
+    text += "\nShape \"curve\" \"point3 P\" [-1 0 0  -0.3 0.2 0  0.3 0.2 0  1 0 0] \"float width\" 0.01\n";
+    auto scene = build(text);
+    EXPECT_TRUE(scene->features.caustic_paths);
+    EXPECT_TRUE(scene->features.curves);
+    EXPECT_EQ(scene->integrator_name, "pt");
+}
