@@ -95,11 +95,13 @@ TEST(CreateShape, AnalyticShapes) {
 
 TEST(CreateShape, UnsupportedAndUnknownShapes) {
     test::QuietWarnings quiet;
-    for (const char *name : {"curve", "cone", "paraboloid", "hyperboloid"})
+    for (const char *name : {"cone", "paraboloid", "hyperboloid"})
         EXPECT_EQ(create_shape(name, {}, false, dictionary({}), loc), nullptr) << name;
     EXPECT_THROW(create_shape("teapot", {}, false, dictionary({}), loc), InputError);
-    // loopsubdiv needs its control mesh, as in pbrt-v4; a cylinder has pbrt-v4's defaults.
+    // loopsubdiv needs its control mesh and a curve its control points, as in pbrt-v4; a
+    // cylinder has pbrt-v4's defaults.
     EXPECT_THROW(create_shape("loopsubdiv", {}, false, dictionary({}), loc), InputError);
+    EXPECT_THROW(create_shape("curve", {}, false, dictionary({}), loc), InputError);
     EXPECT_NE(create_shape("cylinder", {}, false, dictionary({}), loc), nullptr);
 }
 
