@@ -129,15 +129,17 @@ void CurveSet::interaction(int segment, float u, const Ray &ray, float t, Surfac
         coordinate_system(normalize(dpdu), &across, &unused);
     }
     across = normalize(across);
-    const float v = std::clamp(0.5f + dot(p - centre, across) / width, 0.f, 1.f);
-    Vec3f dpdv = across * width;
+    // A curve that narrows to nothing (width1 0, as hair tips often do) can be met where its
+    // width is 0: v is then the middle, and the normal comes from the unit direction across.
+    const float v = width > 0 ? std::clamp(0.5f + dot(p - centre, across) / width, 0.f, 1.f) : 0.5f;
     if (type_ == CurveType::Cylinder) {
         // pbrt-v4 turns dp/dv about the tangent from +90 degrees at v = 0 to -90 at v = 1, so
         // that the normal sweeps across the ribbon as a tube's would.
         const float theta = Pi * (v - 0.5f);
-        dpdv = rotate_about(dpdv, normalize(dpdu), -theta);
+        across = rotate_about(across, normalize(dpdu), -theta);
     }
-    Vec3f n = normalize(cross(dpdu, dpdv));
+    const Vec3f dpdv = across * width;
+    Vec3f n = normalize(cross(dpdu, across));
     if (flip_normal_) n = -n;
 
     si->p = ray.at(t);

@@ -96,6 +96,20 @@ TEST(Curves, WidthIsLinearAlongTheWholeCurve) {
     }
 }
 
+// A curve narrowing to width 0 has a finite surface record everywhere it is met, its tip too.
+TEST(Curves, ZeroWidthTipsHaveFiniteRecords) {
+    for (const char *type : {"flat", "cylinder"}) {
+        auto group = curve({numbers("point3", "P", {-1, 0, 0, -1.f / 3, 0, 0, 1.f / 3, 0, 0, 1, 0, 0}),
+                            strings("string", "type", {type}), numbers("float", "width0", {0.2f}),
+                            numbers("float", "width1", {0})});
+        SurfaceInteraction si;
+        group->curves->interaction(0, 1, towards_z(1, 0), 2, &si);
+        EXPECT_TRUE(std::isfinite(si.n.x) && std::isfinite(si.n.y) && std::isfinite(si.n.z)) << type;
+        EXPECT_NEAR(length(si.n), 1, 1e-5f) << type;
+        EXPECT_EQ(si.uv.y, 0.5f) << type;
+    }
+}
+
 TEST(Curves, BSplinesAndQuadraticsAreTheirBezierSegments) {
     // A cubic uniform B-spline's segment runs from (p0 + 4 p1 + p2) / 6 to (p1 + 4 p2 + p3) / 6
     // through (p0 + 23 p1 + 23 p2 + p3) / 48; a quadratic one's from midpoint to midpoint of its
