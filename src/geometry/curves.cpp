@@ -56,6 +56,7 @@ std::string count(size_t n) { return std::to_string(n); }
 CurveSet::CurveSet(const Transform &render_from_object, bool reverse_orientation, CurveType type,
                    std::vector<Segment> segments)
     : render_from_object_(render_from_object),
+      object_from_render_(render_from_object.inverse()),
       type_(type),
       flip_normal_(reverse_orientation != render_from_object.swaps_handedness()),
       segments_(std::move(segments)) {
@@ -101,8 +102,8 @@ bool CurveSet::covers(int segment, float u, Vec3f o, Vec3f d, float t) const {
     if (type_ != CurveType::Ribbon) return true;
     const Segment &s = segments_[segment];
     u = std::clamp(u, 0.f, 1.f);
-    const Vec3f p = render_from_object_.inverse().apply_point(o + d * t);
-    const Vec3f direction = normalize(render_from_object_.inverse().apply_vector(d));
+    const Vec3f p = object_from_render_.apply_point(o + d * t);
+    const Vec3f direction = normalize(object_from_render_.apply_vector(d));
     Vec3f unused;
     const Vec3f offset = p - evaluate_bezier(s.p, u, &unused);
     // The distance from the curve across the ray, as pbrt-v4 measures it in the plane that
@@ -116,8 +117,8 @@ void CurveSet::interaction(int segment, float u, const Ray &ray, float t, Surfac
     const Segment &s = segments_[segment];
     u = std::clamp(u, 0.f, 1.f);
     // As pbrt-v4, in object space (the ray parameter is the same there).
-    const Vec3f p = render_from_object_.inverse().apply_point(ray.at(t));
-    const Vec3f d = render_from_object_.inverse().apply_vector(ray.d);
+    const Vec3f p = object_from_render_.apply_point(ray.at(t));
+    const Vec3f d = object_from_render_.apply_vector(ray.d);
     Vec3f dpdu;
     const Vec3f centre = evaluate_bezier(s.p, u, &dpdu);
     const float width = lerp(u, s.width[0], s.width[1]);

@@ -64,7 +64,7 @@ class CurveSet {
     void interaction(int segment, float u, const Ray &ray, float t, SurfaceInteraction *si) const;
 
   private:
-    Transform render_from_object_;
+    Transform render_from_object_, object_from_render_;
     CurveType type_;
     bool flip_normal_;
     float render_scale_;  // the transform's mean scale: |det|^(1/3)
