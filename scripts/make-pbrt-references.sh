@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders the pbrt-v4 references of the scenes that tests compare with pbrt-v4: the
 # hard-transport scenes (scenes/hard; see tests/data/pbrt-v4/hard/README.md), the procedural
-# textures (scenes/textures), curves and hair (scenes/shapes), cameras, lights, heterogeneous media and motion blur (scenes/cameras,
+# textures (scenes/textures), measured materials (scenes/materials), curves and hair (scenes/shapes), cameras, lights, heterogeneous media and motion blur (scenes/cameras,
 # scenes/lights, scenes/media, scenes/motion), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
 # not needed by any test: it needs a pbrt-v4 binary (PBRT, default ../shared/tools/pbrt-v4/pbrt)
 # and oiiotool, and takes about half an hour on 2 cores.
@@ -39,6 +39,7 @@ hard/coated-low-roughness 4096
 textures/noise-textures 256
 textures/bump-and-normal-map 256
 textures/alpha-cutouts 4096
+materials/measured 4096
 shapes/curves 4096
 shapes/hair 4096
 shapes/wide-fibres 1024

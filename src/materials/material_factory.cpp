@@ -8,6 +8,7 @@
 #include "materials/diffuse_transmission_material.h"
 #include "materials/disney_material.h"
 #include "materials/hair_material.h"
+#include "materials/measured_material.h"
 #include "materials/mix_material.h"
 #include "materials/shading_perturbation.h"
 #include "params/constant_textures.h"
@@ -23,7 +24,7 @@ namespace caustica {
 
 namespace {
 
-constexpr std::array UnsupportedMaterials = {"measured", "subsurface"};
+constexpr std::array UnsupportedMaterials = {"subsurface"};
 
 std::string quoted(const std::string &s) { return "\"" + s + "\""; }
 
@@ -291,6 +292,18 @@ MaterialPtr create_hair(const ParameterDictionary &params, const NamedTextures &
     return std::make_shared<HairMaterial>(std::move(a), eta, beta_m, beta_n, alpha);
 }
 
+// pbrt-v4's "measured": the RGL BSDF file "filename" (required), relative to the scene file.
+MaterialPtr create_measured(const ParameterDictionary &params) {
+    const std::string filename = params.get_one_string("filename", "");
+    if (filename.empty()) throw InputError(params.location("filename"), "a \"measured\" material needs a \"filename\"");
+    try {
+        return std::make_shared<MeasuredMaterial>(MeasuredBRDF::read(params.file_path("filename", filename)));
+    } catch (const InputError &e) {
+        if (!e.location().file.empty()) throw;
+        throw InputError(params.location("filename"), e.message());
+    }
+}
+
 // pbrt-v4's "normalmap" (an image file) or "displacement" (a float texture); the normal map
 // wins when both are given, as in pbrt-v4.
 std::shared_ptr<const ShadingPerturbation> read_shading_perturbation(const ParameterDictionary &params,
@@ -349,6 +362,8 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         material = create_disney_material(params, textures, read_ior(params), read_interior_absorption(params));
     } else if (type == "hair") {
         material = create_hair(params, textures, loc);
+    } else if (type == "measured") {
+        material = create_measured(params);
     } else if (type == "thindielectric") {
         material = std::make_shared<ThinDielectricMaterial>(read_ior(params));
     } else if (std::find(UnsupportedMaterials.begin(), UnsupportedMaterials.end(), type) !=

@@ -22,9 +22,11 @@
 //    both multiplied by "scale" (default 1);
 //  - "mix": "string materials" [two named materials, declared before], "amount" (float texture,
 //    default 0.5: the probability of the second);
+//  - "hair": pbrt-v4's HairBxDF (hair_material.h);
+//  - "measured": "string filename", an RGL BSDF file (measured_bxdf.h), required;
 //  - "interface": no material (nullptr): the surface only separates media.
-// Not supported yet: "measured", "hair", "subsurface". These warn, naming the type, and
-// render as "diffuse" with their "reflectance" (default 0.5); their other parameters are
+// Not supported yet: "subsurface". It warns, naming the type, and
+// renders as "diffuse" with its "reflectance" (default 0.5); its other parameters are
 // ignored without further warnings.
 //
 // Errors (InputError at the offending parameter): an unknown type (at loc), negative or NaN
@@ -33,7 +35,8 @@
 // negative absorption, a non-positive atDistance; for coated materials a negative thickness,
 // |g| >= 1, maxdepth or nsamples below 1; a negative diffusetransmission scale; a mix of other
 // than two defined named materials, or of materials with an interior (medium, absorption,
-// subsurface). Unused parameters produce warnings.
+// subsurface); a measured material without a filename, or whose file cannot be read or is not an
+// RGL BSDF file. Unused parameters produce warnings.
 #pragma once
 
 #include "core/error.h"

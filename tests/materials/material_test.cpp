@@ -172,7 +172,7 @@ TEST_F(MaterialTest, ThinDielectricAndInterface) {
 }
 
 TEST_F(MaterialTest, UnsupportedMaterialsRenderAsDiffuse) {
-    for (const char *type : {"measured", "subsurface"}) {
+    for (const char *type : {"subsurface"}) {
         MaterialPtr m = create(type, {numbers("spectrum", "reflectance", {0.3}, 2), numbers("float", "roughness", {0.1}, 3)});
         ASSERT_TRUE(m) << type;
         EXPECT_NEAR(weight(*m, Vec3f(0, 0, 1), lambda_)[0], 0.3f, 1e-6f) << type;
