@@ -40,6 +40,7 @@ textures/noise-textures 256
 textures/bump-and-normal-map 256
 textures/alpha-cutouts 4096
 materials/measured 4096
+materials/subsurface 16384
 shapes/curves 4096
 shapes/hair 4096
 shapes/wide-fibres 1024

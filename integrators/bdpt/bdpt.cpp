@@ -11,7 +11,7 @@
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/tile_renderer.h"
 #include "integrators/common/transmittance.h"
-#include "materials/disney_material.h"
+#include "materials/profile_subsurface_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
 

@@ -1,5 +1,6 @@
-// Profile subsurface scattering (the Disney material's normalized diffusion and dipole models: a
-// separable BSSRDF, pbrt-v3 section 15.4) as a path meets it, from either end. Light that a BSDF
+// Profile subsurface scattering (a separable BSSRDF, pbrt-v3 section 15.4: the Disney material's
+// normalized diffusion and dipole models, pbrt-v4's "subsurface"; profile_subsurface_material.h)
+// as a path meets it, from either end. Light that a BSDF
 // sample sends into such a solid from outside leaves it at a point sampled by probe rays against
 // the profile (subsurface_probe.h) and continues through the exit lobe there.
 //
@@ -21,16 +22,17 @@
 
 namespace caustica {
 
-class DisneyMaterial;
+class ProfileSubsurfaceMaterial;
 class Sampler;
 class ScratchBuffer;
 class Scene;
 class SampledWavelengths;
 
 // The material whose profile subsurface the BSDF sample bs, taken at si, enters, or null.
-// DisneyBxDF samples that entry from outside as its only diffuse transmission (disney_bxdf.h);
-// a random walk's crossing looks the same but leads into the interior medium.
-const DisneyMaterial *profile_entry(const SurfaceInteraction &si, const BSDFSample &bs);
+// The material's BSDF samples that entry from outside as its only diffuse transmission
+// (disney_bxdf.h, subsurface_entry_bxdf.h); a random walk's crossing looks the same but leads
+// into the interior medium.
+const ProfileSubsurfaceMaterial *profile_entry(const SurfaceInteraction &si, const BSDFSample &bs);
 
 struct ProfileExit {
     SurfaceInteraction si;  // the exit point; its wo is -n, as the light arrives through the interior
@@ -41,13 +43,13 @@ struct ProfileExit {
 // Samples where the light entering at `entry` leaves (three sampler dimensions, one probe ray
 // counted in `rays`); empty when the probe finds no exit (a zero-valued sample). The exit lobe's
 // BxDF lives in `scratch`.
-std::optional<ProfileExit> sample_profile_exit(const Scene &scene, const DisneyMaterial &material,
+std::optional<ProfileExit> sample_profile_exit(const Scene &scene, const ProfileSubsurfaceMaterial &material,
                                                const SurfaceInteraction &entry, const SampledWavelengths &lambda,
                                                Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays);
 
 // The solid-angle density with which the exit lobe at `entry` would sample entry.wo: what a walk
 // from the other end, jumping to this point, would take to leave it towards where this path came
 // from. Bidirectional MIS needs it as the reverse density at an entry.
-float profile_exit_density(const DisneyMaterial &material, const SurfaceInteraction &entry, ScratchBuffer &scratch);
+float profile_exit_density(const ProfileSubsurfaceMaterial &material, const SurfaceInteraction &entry, ScratchBuffer &scratch);
 
 } // namespace caustica

@@ -108,7 +108,7 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
     return s;
 }
 
-bool SubpathWalk::jump(const DisneyMaterial &profile) {
+bool SubpathWalk::jump(const ProfileSubsurfaceMaterial &profile) {
     std::optional<ProfileExit> exit = sample_profile_exit(scene_, profile, si_, lambda_, sampler_, bsdf_memory_, rays_);
     if (!exit) return false;
     beta *= exit->weight;

@@ -43,7 +43,7 @@
 
 namespace caustica {
 
-class DisneyMaterial;
+class ProfileSubsurfaceMaterial;
 class Material;
 class Medium;
 class Sampler;
@@ -68,7 +68,7 @@ struct WalkScatter {
     bool specular = false;    // a delta lobe: the densities are deltas, equal both ways
     // The sample enters a profile-subsurface solid: the path has not moved, and the integrator
     // calls jump() to reach the exit (after its own bookkeeping at the entry).
-    const DisneyMaterial *profile = nullptr;
+    const ProfileSubsurfaceMaterial *profile = nullptr;
 };
 
 class SubpathWalk {
@@ -110,7 +110,7 @@ class SubpathWalk {
     void pass_through();
     // The rest of a profile event that scatter() began: samples the exit and makes it the
     // vertex (after_jump()); false when the profile finds no exit or the throughput vanishes.
-    bool jump(const DisneyMaterial &profile);
+    bool jump(const ProfileSubsurfaceMaterial &profile);
 
     // Russian roulette once `depth` scattering vertices lie behind (from the second on), on the
     // throughput with the radiance-mode 1/eta^2 undone (importance has none); false when the path

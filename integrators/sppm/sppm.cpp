@@ -14,7 +14,7 @@
 #include "integrators/common/profile_subsurface.h"
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/wavelength_groups.h"
-#include "materials/disney_material.h"
+#include "materials/profile_subsurface_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
 #include "spatial/photon_map.h"
@@ -133,7 +133,7 @@ void find_subsurface_visible_point(const Scene &scene, const SurfaceInteraction 
     const float u = sampler.get_1d();
     auto bs = bsdf.sample_f(si.wo, u, sampler.get_2d(), TransportMode::Radiance);
     if (!bs) return;
-    const DisneyMaterial *material = profile_entry(si, *bs);
+    const ProfileSubsurfaceMaterial *material = profile_entry(si, *bs);
     if (!material) return;
     std::optional<ProfileExit> exit =
         sample_profile_exit(scene, *material, si, lambda, sampler, ctx.iteration_scratch, ctx.rays);
@@ -242,6 +242,31 @@ void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const 
                                                     visible_point ? DirectLighting::LightSamplingOnly
                                                                   : DirectLighting::WeightedAgainstBsdfSampling,
                                                     walk.medium());
+        const auto *profile_solid = dynamic_cast<const ProfileSubsurfaceMaterial *>(si.material);
+        if (visible_point && profile_solid && profile_solid->reflects_only_specularly(si)) {
+            // A smooth boundary over a profile solid: no photon can be gathered at the surface.
+            // One BSDF sample either enters (the light below the surface, found at the exit as
+            // at any subsurface visible point) or reflects, and the path follows the reflection.
+            const std::optional<WalkScatter> s = walk.scatter();
+            if (!s) return;
+            if (s->profile) {
+                if (!walk.jump(*s->profile)) return;
+                const SurfaceInteraction &at = walk.hit();
+                const BSDF &exit_bsdf = walk.vertex().bsdf;
+                L += walk.beta * sample_direct_lighting(scene, at, exit_bsdf, LightSampleContext{at.p, at.n, at.shading.n},
+                                                        lambda, sampler, ctx.rays, TransportMode::Radiance,
+                                                        DirectLighting::LightSamplingOnly, walk.medium());
+                state.subsurface_vp = VisiblePoint{at.p,  at.n,    at.shading.n, at.wo, depth, exit_bsdf, nullptr,
+                                                   walk.beta / at.coverage, lambda};
+                return;
+            }
+            bsdf_pdf = s->pdf_fwd;
+            specular_bounce = s->specular;
+            medium_scatter = false;
+            previous = here;
+            if (walk.beta.is_black()) return;
+            continue;
+        }
         if (visible_point) {
             state.vp = VisiblePoint{si.p, si.n, si.shading.n, si.wo, depth, bsdf, nullptr, walk.beta / si.coverage,
                                     lambda};

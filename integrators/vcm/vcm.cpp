@@ -16,7 +16,7 @@
 #include "integrators/vcm/light_vertex.h"
 #include "integrators/vcm/vcm_mis.h"
 #include "integrators/common/wavelength_groups.h"
-#include "materials/disney_material.h"
+#include "materials/profile_subsurface_material.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
 #include "spatial/photon_map.h"

@@ -98,7 +98,8 @@ PiecewiseLinear2D::Blend PiecewiseLinear2D::blend(std::span<const float> paramet
         if (n == 1) continue;
         const float p = d < parameters.size() ? parameters[d] : values[0];
         const uint32_t i = find_interval(n, [&](uint32_t j) { return values[j] <= p; });
-        const float t = clamp((p - values[i]) / (values[i + 1] - values[i]), 0.f, 1.f);
+        const float ratio = (p - values[i]) / (values[i + 1] - values[i]);
+        const float t = ratio >= 0 ? std::min(ratio, 1.f) : 0.f;  // NaN to 0
         for (int k = 0; k < b.count; ++k) {
             b.slice[b.count + k] = b.slice[k] + i + 1;
             b.weight[b.count + k] = b.weight[k] * t;
@@ -145,7 +146,9 @@ PiecewiseLinear2D::Sample PiecewiseLinear2D::sample(Vec2f u, std::span<const flo
 
 PiecewiseLinear2D::Cell PiecewiseLinear2D::cell(Vec2f p, const Blend &b) const {
     const uint32_t cells = uint32_t(nx_) * ny_;
-    const float gx = p.x * float(nx_ - 1), gy = p.y * float(ny_ - 1);
+    // Points are kept in the unit square (a NaN goes to 0), so that the cell is always valid.
+    auto unit = [](float v) { return v >= 0 ? std::min(v, 1.f) : 0.f; };
+    const float gx = unit(p.x) * float(nx_ - 1), gy = unit(p.y) * float(ny_ - 1);
     Cell c;
     c.col = uint32_t(std::clamp(int(gx), 0, nx_ - 2));
     c.row = uint32_t(std::clamp(int(gy), 0, ny_ - 2));

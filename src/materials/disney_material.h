@@ -27,7 +27,7 @@
 #include "core/error.h"
 #include "materials/dipole_profile.h"
 #include "materials/disney_bxdf.h"
-#include "materials/material.h"
+#include "materials/profile_subsurface_material.h"
 #include "materials/normalized_diffusion.h"
 #include "media/medium.h"
 #include "spectral/spectrum.h"
@@ -74,7 +74,7 @@ inline const SubsurfaceProfile &as_profile(const DisneySubsurfaceProfile &profil
     return std::visit([](const auto &p) -> const SubsurfaceProfile & { return p; }, profile);
 }
 
-class DisneyMaterial final : public Material {
+class DisneyMaterial final : public ProfileSubsurfaceMaterial {
   public:
     // eta: index of the inside relative to the outside (a constant or a dispersion curve).
     // sigma_a: interior absorption per unit length, or null (always null for thin surfaces).
@@ -110,7 +110,11 @@ class DisneyMaterial final : public Material {
     // For profile subsurface: the profile of light entering at si, and the BSDF of its exit lobe
     // at a point where it leaves (wo must point inside there).
     DisneySubsurfaceProfile subsurface_profile(const SurfaceInteraction &si, const SampledWavelengths &lambda) const;
-    BSDF subsurface_exit_bsdf(const SurfaceInteraction &si, ScratchBuffer &scratch) const;
+    const SubsurfaceProfile &entry_profile(const SurfaceInteraction &si, const SampledWavelengths &lambda,
+                                           ScratchBuffer &scratch) const override {
+        return as_profile(*scratch.make<DisneySubsurfaceProfile>(subsurface_profile(si, lambda)));
+    }
+    BSDF subsurface_exit_bsdf(const SurfaceInteraction &si, ScratchBuffer &scratch) const override;
     // Burley 2015, section 2.4 and Figure 12: a profile is the answer for a flat half-space and
     // overestimates what crosses a cavity between surfaces that face each other, so the notes
     // fade the diffusion result "as the surfaces become opposing", by the angle between the
@@ -122,7 +126,7 @@ class DisneyMaterial final : public Material {
     // fade brings it back to what a half-space reflects (tested), but it also removes the light
     // a thin part really transmits (ears, fingers), which has no other path here. So it is an
     // artist's control, off by default (cavityFade 0); the random walk needs no fade.
-    float cavity_fade(Vec3f entry_normal, Vec3f exit_normal) const {
+    float cavity_fade(Vec3f entry_normal, Vec3f exit_normal) const override {
         return 1 - subsurface_.cavity_fade * std::clamp(-dot(entry_normal, exit_normal), 0.f, 1.f);
     }
 

@@ -11,10 +11,14 @@
 #include "materials/measured_material.h"
 #include "materials/mix_material.h"
 #include "materials/shading_perturbation.h"
+#include "materials/subsurface_coefficients.h"
+#include "materials/subsurface_material.h"
 #include "params/constant_textures.h"
 #include "params/parameters.h"
+#include "spectral/color_space.h"
 #include "spectral/ior.h"
 #include "spectral/named_spectra.h"
+#include "spectral/rgb_spectrum.h"
 
 #include <algorithm>
 #include <array>
@@ -24,7 +28,6 @@ namespace caustica {
 
 namespace {
 
-constexpr std::array UnsupportedMaterials = {"subsurface"};
 
 std::string quoted(const std::string &s) { return "\"" + s + "\""; }
 
@@ -292,6 +295,55 @@ MaterialPtr create_hair(const ParameterDictionary &params, const NamedTextures &
     return std::make_shared<HairMaterial>(std::move(a), eta, beta_m, beta_n, alpha);
 }
 
+SpectrumTexturePtr constant_rgb(const RGB &rgb) {
+    return std::make_shared<ConstantSpectrumTexture>(std::make_shared<RGBUnboundedSpectrum>(RGBColorSpace::srgb(), rgb));
+}
+
+// pbrt-v4's "subsurface" (subsurface_material.h): the coefficients by "name", else "sigma_a" with
+// "sigma_s", else "reflectance" with "mfp", else pbrt-v4's default; one of sigma_a and sigma_s
+// without the other is an error, as in pbrt-v4.
+MaterialPtr create_subsurface(const ParameterDictionary &params, const NamedTextures &textures) {
+    SubsurfaceMaterial::Coefficients c;
+    float g = params.get_one_float("g", 0);
+    const std::string name = params.get_one_string("name", "");
+    if (!name.empty()) {
+        const auto medium = find_measured_subsurface_medium(name);
+        if (!medium)
+            throw InputError(params.location("name"), "unknown measured medium " + quoted(name) + " (known: " +
+                                                          measured_subsurface_media_names() + ")");
+        if (g != 0) warning(params.location("g"), "\"g\" is ignored with a named medium, whose tables give reduced scattering");
+        g = 0;
+        c.sigma_a = constant_rgb(medium->sigma_a);
+        c.sigma_s = constant_rgb(medium->sigma_s_reduced);
+    } else {
+        c.sigma_a = params.get_spectrum_texture_or_null("sigma_a", SpectrumType::Unbounded, textures);
+        c.sigma_s = params.get_spectrum_texture_or_null("sigma_s", SpectrumType::Unbounded, textures);
+        if (bool(c.sigma_a) != bool(c.sigma_s))
+            throw InputError(params.location(c.sigma_a ? "sigma_a" : "sigma_s"),
+                             "\"sigma_a\" and \"sigma_s\" must be given together");
+        if (c.sigma_a) {
+            check_spectrum_texture(params, "sigma_a", c.sigma_a, true, "a non-negative absorption coefficient");
+            check_spectrum_texture(params, "sigma_s", c.sigma_s, true, "a non-negative scattering coefficient");
+        } else if ((c.reflectance = params.get_spectrum_texture_or_null("reflectance", SpectrumType::Albedo, textures))) {
+            c.mfp = params.get_spectrum_texture("mfp", std::make_shared<ConstantSpectrum>(1.f), SpectrumType::Unbounded,
+                                                textures);
+            check_spectrum_texture(params, "mfp", c.mfp, true, "a non-negative mean free path");
+        } else {
+            // Whole milk in mm^-1 (Jensen et al. 2001).
+            c.sigma_a = constant_rgb(RGB(.0011f, .0024f, .014f));
+            c.sigma_s = constant_rgb(RGB(2.55f, 3.21f, 3.77f));
+        }
+    }
+    c.scale = params.get_one_float("scale", 1);
+    if (!(c.scale >= 0) || !std::isfinite(c.scale))
+        throw InputError(params.location("scale"), "\"scale\" must be a non-negative number");
+    if (!(std::abs(g) < 1)) throw InputError(params.location("g"), "\"g\" must lie in (-1, 1)");
+    const float eta = params.get_one_float("eta", 1.33f);
+    if (!(eta > 0) || !std::isfinite(eta))
+        throw InputError(params.location("eta"), "\"eta\" must be a positive index of refraction");
+    return std::make_shared<SubsurfaceMaterial>(std::move(c), g, eta, read_roughness(params, textures));
+}
+
 // pbrt-v4's "measured": the RGL BSDF file "filename" (required), relative to the scene file.
 MaterialPtr create_measured(const ParameterDictionary &params) {
     const std::string filename = params.get_one_string("filename", "");
@@ -366,13 +418,8 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         material = create_measured(params);
     } else if (type == "thindielectric") {
         material = std::make_shared<ThinDielectricMaterial>(read_ior(params));
-    } else if (std::find(UnsupportedMaterials.begin(), UnsupportedMaterials.end(), type) !=
-               UnsupportedMaterials.end()) {
-        warning(loc, "material " + quoted(type) + " is not supported yet; rendering it as " +
-                         "\"diffuse\" with its \"reflectance\"");
-        // The other parameters belong to the unsupported model: listing them as unused would
-        // only repeat the warning above.
-        return std::make_shared<DiffuseMaterial>(read_reflectance(params, textures));
+    } else if (type == "subsurface") {
+        material = create_subsurface(params, textures);
     } else {
         throw InputError(loc, "unknown material type " + quoted(type));
     }

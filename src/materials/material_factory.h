@@ -24,10 +24,11 @@
 //    default 0.5: the probability of the second);
 //  - "hair": pbrt-v4's HairBxDF (hair_material.h);
 //  - "measured": "string filename", an RGL BSDF file (measured_bxdf.h), required;
+//  - "subsurface": pbrt-v4's tabulated photon-beam-diffusion BSSRDF (subsurface_material.h):
+//    "name" (a measured medium), or "sigma_a" with "sigma_s", or "reflectance" with "mfp"
+//    (default 1); "scale" (default 1), "g" (default 0), "eta" (float, default 1.33), roughness
+//    as for conductors (default 0);
 //  - "interface": no material (nullptr): the surface only separates media.
-// Not supported yet: "subsurface". It warns, naming the type, and
-// renders as "diffuse" with its "reflectance" (default 0.5); its other parameters are
-// ignored without further warnings.
 //
 // Errors (InputError at the offending parameter): an unknown type (at loc), negative or NaN
 // roughness, a non-positive or NaN index of refraction, conflicting parameterisations (eta
@@ -36,7 +37,9 @@
 // |g| >= 1, maxdepth or nsamples below 1; a negative diffusetransmission scale; a mix of other
 // than two defined named materials, or of materials with an interior (medium, absorption,
 // subsurface); a measured material without a filename, or whose file cannot be read or is not an
-// RGL BSDF file. Unused parameters produce warnings.
+// RGL BSDF file; a subsurface material with an unknown "name", "sigma_a" without "sigma_s" (or
+// the reverse), negative coefficients, scale or mean free path, |g| >= 1 or a non-positive eta.
+// Unused parameters produce warnings.
 #pragma once
 
 #include "core/error.h"

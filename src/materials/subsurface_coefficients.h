@@ -32,8 +32,11 @@ struct MeasuredSubsurfaceMedium {
     float eta;
 };
 
-// All the media of the table, and one looked up by name, ignoring case ("skin1", "Skin1").
+// All the media of Jensen et al.'s table; those of Narasimhan et al. 2006's (liquids and powders
+// in water: some scatter nothing in a band); and one looked up by name in either, ignoring case
+// ("skin1", "Skin1", "Regular Milk"), as pbrt-v4's named media.
 std::span<const MeasuredSubsurfaceMedium> measured_subsurface_media();
+std::span<const MeasuredSubsurfaceMedium> diluted_media();
 std::optional<MeasuredSubsurfaceMedium> find_measured_subsurface_medium(std::string_view name);
 // The media's names, comma-separated, for error messages about unknown presets.
 std::string measured_subsurface_media_names();

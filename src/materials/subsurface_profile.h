@@ -25,7 +25,6 @@ inline constexpr double ProfileEnergyWithinMaxRadius = 0.999;
 
 class SubsurfaceProfile {
   public:
-    virtual ~SubsurfaceProfile() = default;
 
     // R(r) for every channel, per unit area (1 / length^2), albedo included.
     virtual SampledSpectrum evaluate(float r) const = 0;
@@ -40,6 +39,11 @@ class SubsurfaceProfile {
     // Radius holding ProfileEnergyWithinMaxRadius of the channel's energy; 0 when the channel has
     // none (it is then never sampled).
     virtual float max_radius(int channel) const = 0;
+
+  protected:
+    // Profiles live in a ScratchBuffer or by value, and are never destroyed through a base
+    // pointer.
+    ~SubsurfaceProfile() = default;
 };
 
 } // namespace caustica

@@ -171,14 +171,6 @@ TEST_F(MaterialTest, ThinDielectricAndInterface) {
     EXPECT_EQ(create("interface", {}), nullptr);
 }
 
-TEST_F(MaterialTest, UnsupportedMaterialsRenderAsDiffuse) {
-    for (const char *type : {"subsurface"}) {
-        MaterialPtr m = create(type, {numbers("spectrum", "reflectance", {0.3}, 2), numbers("float", "roughness", {0.1}, 3)});
-        ASSERT_TRUE(m) << type;
-        EXPECT_NEAR(weight(*m, Vec3f(0, 0, 1), lambda_)[0], 0.3f, 1e-6f) << type;
-    }
-}
-
 TEST_F(MaterialTest, UnusedParametersAreNotLookedUp) {
     create("diffuse", {numbers("spectrum", "reflectance", {0.3}, 2), numbers("float", "sheen", {1}, 3)});
     EXPECT_TRUE(dict_->parameters()[0].looked_up);
