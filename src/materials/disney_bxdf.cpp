@@ -456,26 +456,6 @@ std::optional<BSDFSample> DisneyBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tran
     return s;
 }
 
-SampledSpectrum DisneySubsurfaceExitBxDF::f(Vec3f wo, Vec3f wi, TransportMode) const {
-    if (!(wo.z < 0 && wi.z > 0)) return {};
-    return SampledSpectrum(InvPi * (1 - schlick_weight(wi.z) / 2));
-}
-
-std::optional<BSDFSample> DisneySubsurfaceExitBxDF::sample_f(Vec3f wo, float, Vec2f u, TransportMode mode,
-                                                             SampleFlags flags) const {
-    if (!(wo.z < 0) || !allows(flags, SampleFlags::Transmission)) return {};
-    BSDFSample s;
-    s.wi = sample_cosine_hemisphere(u);
-    if (s.wi.z == 0) return {};
-    s.f = f(wo, s.wi, mode);
-    s.pdf = cosine_hemisphere_pdf(s.wi.z);
-    s.flags = BxDFDiffuseTransmission;
-    return s;
-}
-
-float DisneySubsurfaceExitBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) const {
-    if (!(wo.z < 0 && wi.z > 0) || !allows(flags, SampleFlags::Transmission)) return 0;
-    return cosine_hemisphere_pdf(wi.z);
-}
+float DisneySubsurfaceExitBxDF::exit_value(float cos_i) const { return InvPi * (1 - schlick_weight(cos_i) / 2); }
 
 } // namespace caustica

@@ -73,6 +73,7 @@
 #pragma once
 
 #include "materials/bxdf.h"
+#include "materials/subsurface_exit_lobe.h"
 #include "materials/dielectric_bxdf.h"
 #include "materials/microfacet.h"
 
@@ -183,14 +184,9 @@ class DisneyBxDF final : public BxDF {
 // distance reproduces eq. 4 exactly. Its albedo is 41/42 (what the diffuse BRDF loses too); it is
 // deliberately not renormalised to 1 as pbrt-v3's Sw is, which would reflect 42/41 of the BRDF.
 // Sampled by the cosine density.
-class DisneySubsurfaceExitBxDF final : public BxDF {
-  public:
-    SampledSpectrum f(Vec3f wo, Vec3f wi, TransportMode mode) const override;
-    std::optional<BSDFSample> sample_f(Vec3f wo, float uc, Vec2f u, TransportMode mode,
-                                       SampleFlags flags = SampleFlags::All) const override;
-    float pdf(Vec3f wo, Vec3f wi, TransportMode mode,
-              SampleFlags flags = SampleFlags::All) const override;
-    BxDFFlags flags() const override { return BxDFDiffuseTransmission; }
+class DisneySubsurfaceExitBxDF final : public SubsurfaceExitLobe {
+  protected:
+    float exit_value(float cos_i) const override;
 };
 
 } // namespace caustica
