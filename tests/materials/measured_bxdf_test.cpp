@@ -262,6 +262,57 @@ TEST(MeasuredBRDF, ReadsAWellFormedFileAndRejectsBadOnes) {
     std::filesystem::remove_all(dir);
 }
 
+// Damaged files (a byte set to a random value, or the file cut short, anywhere in the synthetic
+// isotropic file) are read or rejected with an InputError, never anything else; the sanitizer
+// build runs this too. Values that stay finite may be read; the checks of read() must catch
+// every damage that would make evaluation or sampling unsafe, so each file read is also sampled.
+TEST(MeasuredBRDF, DamagedFilesAreReadOrRejectedCleanly) {
+    const std::string original = [&] {
+        std::FILE *f = std::fopen(bsdf_path("isotropic").c_str(), "rb");
+        std::string bytes;
+        char buffer[4096];
+        size_t n;
+        while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) bytes.append(buffer, n);
+        std::fclose(f);
+        return bytes;
+    }();
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("caustica-damaged-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    Rng rng(21, 5);
+    int rejected = 0, read = 0;
+    for (int i = 0; i < 300; ++i) {
+        std::string bytes = original;
+        // Most of the damage goes to the header (the first 400 bytes), where it matters most.
+        const size_t at = i % 3 ? size_t(rng.uniform() * 400) : size_t(rng.uniform() * bytes.size());
+        if (i % 10 == 0)
+            bytes.resize(at);
+        else
+            bytes[at] = char(rng.uniform() * 256);
+        const std::string path = (dir / ("damaged" + std::to_string(i) + ".bsdf")).string();
+        std::FILE *f = std::fopen(path.c_str(), "wb");
+        std::fwrite(bytes.data(), 1, bytes.size(), f);
+        std::fclose(f);
+        try {
+            const auto brdf = MeasuredBRDF::read(path);
+            ++read;
+            const MeasuredBxDF b(brdf.get(), SampledWavelengths::sample_visible(0.5f));
+            for (int j = 0; j < 20; ++j) {
+                const Vec3f wo = direction(1.5f * rng.uniform(), 2 * Pi * rng.uniform());
+                if (auto s = b.sample_f(wo, 0, rng.uniform2(), Radiance)) {
+                    EXPECT_TRUE(std::isfinite(s->pdf) && s->pdf > 0);
+                    for (int k = 0; k < NumWavelengths; ++k) EXPECT_TRUE(std::isfinite(s->f[k]));
+                }
+            }
+        } catch (const InputError &) {
+            ++rejected;
+        }
+    }
+    std::filesystem::remove_all(dir);
+    EXPECT_GT(rejected, 50);
+    EXPECT_GT(read, 50);
+}
+
 TEST(MeasuredMaterial, FactoryReadsTheFileNamedRelativeToTheScene) {
     const NamedTextures textures;
     const std::string dir = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/materials";
