@@ -38,6 +38,7 @@ class SubsurfaceMaterial final : public ProfileSubsurfaceMaterial {
                   ScratchBuffer &scratch) const override;
     bool has_specular_lobe() const override { return roughness_.may_be_smooth(); }
     bool forms_caustics() const override { return has_specular_lobe() || roughness_.may_focus_light(); }
+    bool has_subsurface() const override { return true; }
     bool has_profile_subsurface() const override { return true; }
 
     const SubsurfaceProfile &entry_profile(const SurfaceInteraction &si, const SampledWavelengths &lambda,
