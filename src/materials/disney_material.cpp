@@ -261,9 +261,13 @@ BSDF DisneyMaterial::get_bsdf(const SurfaceInteraction &si, const SampledWavelen
 
 DisneySubsurfaceProfile DisneyMaterial::subsurface_profile(const SurfaceInteraction &si,
                                                             const SampledWavelengths &lambda) const {
-    if (subsurface_.model == SubsurfaceModel::Dipole && subsurface_.sigma_a)
-        return DipoleProfile(subsurface_.sigma_a->sample(lambda) * subsurface_.scale,
-                             subsurface_.sigma_s_reduced->sample(lambda) * subsurface_.scale, reference_eta_);
+    if (subsurface_.sigma_a) {
+        const SampledSpectrum sigma_a = subsurface_.sigma_a->sample(lambda) * subsurface_.scale;
+        const SampledSpectrum sigma_s = subsurface_.sigma_s_reduced->sample(lambda) * subsurface_.scale;
+        if (subsurface_.model == SubsurfaceModel::BeamDiffusion)
+            return BeamDiffusionProfile(*subsurface_.beam_table, sigma_a, sigma_s);
+        return DipoleProfile(sigma_a, sigma_s, reference_eta_);
+    }
     SampledSpectrum albedo = textures_.base_color->evaluate(TextureEvalContext(si), lambda);
     SampledSpectrum d = subsurface_.scatter_distance->evaluate(TextureEvalContext(si), lambda);
     // A textured distance has its floor set from the widest of the path's channels here (and a
@@ -275,6 +279,12 @@ DisneySubsurfaceProfile DisneyMaterial::subsurface_profile(const SurfaceInteract
         d[i] = std::max(d[i], floor);
     }
     if (subsurface_.model == SubsurfaceModel::Diffusion) return NormalizedDiffusionProfile(albedo, d);
+    if (subsurface_.model == SubsurfaceModel::BeamDiffusion) {
+        SampledSpectrum mean_free_path, sigma_a, sigma_s;
+        for (int i = 0; i < NumWavelengths; ++i) mean_free_path[i] = d[i] * christensen_burley_scaling(albedo[i]);
+        beam_diffusion_from_diffuse(*subsurface_.beam_table, albedo, mean_free_path, &sigma_a, &sigma_s);
+        return BeamDiffusionProfile(*subsurface_.beam_table, sigma_a, sigma_s);
+    }
     DipoleCoefficients c = dipole_coefficients(albedo, d, reference_eta_);
     return DipoleProfile(c.sigma_a, c.sigma_s_reduced, reference_eta_);
 }
@@ -305,8 +315,9 @@ SubsurfaceModel read_subsurface_model(const ParameterDictionary &params) {
     if (name == "randomwalk") return SubsurfaceModel::RandomWalk;
     if (name == "diffusion") return SubsurfaceModel::Diffusion;
     if (name == "dipole") return SubsurfaceModel::Dipole;
+    if (name == "beamdiffusion") return SubsurfaceModel::BeamDiffusion;
     throw InputError(params.location("subsurface"),
-                     "unknown subsurface model \"" + name + "\" (randomwalk, diffusion or dipole)");
+                     "unknown subsurface model \"" + name + "\" (randomwalk, diffusion, dipole or beamdiffusion)");
 }
 
 // A solid's subsurface parameters (docs/disney.md); interior_sigma_a moves into the random walk's
@@ -316,17 +327,17 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
                                  SpectrumPtr &interior_sigma_a) {
     DisneySubsurface sub;
     sub.model = read_subsurface_model(params);
-    if (sub.model == SubsurfaceModel::Dipole) {
+    if (sub.model == SubsurfaceModel::Dipole || sub.model == SubsurfaceModel::BeamDiffusion) {
         std::string preset = params.get_one_string("preset", "");
         if (!preset.empty()) {
             auto measured = find_measured_subsurface_medium(preset);
             if (!measured)
                 throw InputError(params.location("preset"),
-                                 "unknown subsurface preset \"" + preset + "\" (Jensen et al. 2001's media: " +
+                                 "unknown subsurface preset \"" + preset + "\" (the measured media: " +
                                      measured_subsurface_media_names() + ")");
             if (params.has("scatterDistance"))
                 throw InputError(params.location("scatterDistance"),
-                                 "give either \"preset\" or \"scatterDistance\" for the dipole, not both");
+                                 "give either \"preset\" or \"scatterDistance\", not both");
             sub.scale = params.get_one_float("scale", 1);
             if (!(std::isfinite(sub.scale) && sub.scale > 0))
                 throw InputError(params.location("scale"), "\"scale\" must be a positive number");
@@ -356,8 +367,8 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
     if (params.has("cavityFade")) {
         if (sub.model == SubsurfaceModel::RandomWalk)
             throw InputError(params.location("cavityFade"),
-                             "\"cavityFade\" applies to the profile models (\"string subsurface\" \"diffusion\" "
-                             "or \"dipole\"); the random walk follows the geometry and needs no fade");
+                             "\"cavityFade\" applies to the profile models (\"string subsurface\" \"diffusion\", "
+                             "\"dipole\" or \"beamdiffusion\"); the random walk follows the geometry and needs no fade");
         sub.cavity_fade = params.get_one_float("cavityFade", 0);
         if (!(sub.cavity_fade >= 0 && sub.cavity_fade <= 1))
             throw InputError(params.location("cavityFade"), "\"cavityFade\" must lie in [0, 1]");
@@ -365,6 +376,8 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
     if (sub.model == SubsurfaceModel::Dipole && !(reference_eta >= 1))
         throw InputError(params.location("eta"), "the dipole needs an interior index \"eta\" >= 1 (its boundary "
                                                  "condition is for light leaving a denser medium)");
+    if (sub.enabled && sub.model == SubsurfaceModel::BeamDiffusion)
+        sub.beam_table = std::make_shared<const BeamDiffusionTable>(compute_beam_diffusion_table(0, reference_eta));
     if (sub.model == SubsurfaceModel::RandomWalk) {
         // The interior takes over the solid's absorption: one volume for a constant base colour,
         // one per entry point for a textured one.

@@ -17,7 +17,11 @@
 //     come either from (baseColor, scatterDistance), chosen so that the dipole reflects
 //     baseColor with the spread of the normalised profile of the same d, or from a measured
 //     medium of Jensen's table ("string preset", in mm^-1, times "float scale").
-// For the two profile models the separable BSSRDF is
+//   - "beamdiffusion": the same with the photon beam diffusion profile of Habel et al. 2013
+//     (photon_beam_diffusion.h, pbrt-v4's "subsurface" material's), whose coefficients come
+//     either from (baseColor, scatterDistance), the single-scattering albedo whose profile
+//     reflects baseColor and the mean free path d s(A) (as for the dipole), or from a preset.
+// For the profile models the separable BSSRDF is
 //     S(x_o, w_o; x_i, w_i) = w (1 - F(w_i) / 2) R(|x_o - x_i|) (1 - F(w_o) / 2) / pi,
 // the crossing's entering share, the profile (which integrates to its albedo) and the exit lobe
 // (DisneySubsurfaceExitBxDF); as the scatter distance vanishes it is eq. 4's Lambertian part.
@@ -27,6 +31,7 @@
 #include "core/error.h"
 #include "materials/dipole_profile.h"
 #include "materials/disney_bxdf.h"
+#include "materials/photon_beam_diffusion.h"
 #include "materials/profile_subsurface_material.h"
 #include "materials/normalized_diffusion.h"
 #include "media/medium.h"
@@ -48,7 +53,7 @@ struct DisneyTextures {
     FloatTexturePtr diff_trans, flatness;
 };
 
-enum class SubsurfaceModel { RandomWalk, Diffusion, Dipole };
+enum class SubsurfaceModel { RandomWalk, Diffusion, Dipole, BeamDiffusion };
 
 // A solid's subsurface scattering; `enabled` false (the default) for none.
 struct DisneySubsurface {
@@ -61,15 +66,18 @@ struct DisneySubsurface {
     SpectrumPtr walk_absorption;
     // Random walk, diffusion, and dipole without a preset: d per wavelength, a value or a texture.
     SpectrumTexturePtr scatter_distance;
-    // Dipole with a preset: Jensen's coefficients (mm^-1) and the scene units' conversion.
+    // Dipole or beam diffusion with a preset: the measured coefficients (mm^-1) and the scene
+    // units' conversion.
     SpectrumPtr sigma_a, sigma_s_reduced;
+    // Beam diffusion: the profile's table, for g = 0 and the solid's index.
+    std::shared_ptr<const BeamDiffusionTable> beam_table;
     float scale = 1;
     // Profile models: the strength of the cavity fade (see DisneyMaterial::cavity_fade).
     float cavity_fade = 0;
 };
 
 // The profile of a diffusion or dipole solid for light entering at one point.
-using DisneySubsurfaceProfile = std::variant<NormalizedDiffusionProfile, DipoleProfile>;
+using DisneySubsurfaceProfile = std::variant<NormalizedDiffusionProfile, DipoleProfile, BeamDiffusionProfile>;
 inline const SubsurfaceProfile &as_profile(const DisneySubsurfaceProfile &profile) {
     return std::visit([](const auto &p) -> const SubsurfaceProfile & { return p; }, profile);
 }

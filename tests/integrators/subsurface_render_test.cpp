@@ -117,7 +117,7 @@ const char *const Base = R"(Material "disney" "rgb baseColor" [ 0.8 0.5 0.2 ] "f
 TEST(SubsurfaceRender, EveryModelReflectsWhatTheDiffuseBRDFReflects) {
     std::string dir = scratch_dir("subsurface-furnace");
     MeanEstimate brdf = render_mean(dir, "brdf", furnace_scene(Base), 1024, 11);
-    for (const char *model : {"diffusion", "dipole", "randomwalk"}) {
+    for (const char *model : {"diffusion", "dipole", "beamdiffusion", "randomwalk"}) {
         std::string material = std::string(Base) + R"( "rgb scatterDistance" [ 0.01 0.01 0.01 ] "string subsurface" ")" +
                                model + "\"";
         // The random walk is the slowest model: half the samples, a larger standard error.
@@ -417,7 +417,7 @@ void expect_agreement(const BlockMeans &pt, const BlockMeans &other, const std::
 // fails by far; exits placed at the wrong distance move light between the blocks.
 TEST(SubsurfaceRender, LightPathIntegratorsAgreeWithThePathTracerOnProfiles) {
     std::string dir = scratch_dir("subsurface-light-paths");
-    for (const std::string model : {"diffusion", "dipole"}) {
+    for (const std::string model : {"diffusion", "dipole", "beamdiffusion"}) {
         const std::string path = dir + "/" + model + ".pbrt", out = dir + "/" + model + ".exr";
         std::ofstream(path) << lit_slab_scene(model, R"(Integrator "path" "integer maxdepth" [ 2 ])");
         const BlockMeans pt(path + " --integrator pt", out, 0);
