@@ -330,8 +330,8 @@ MaterialPtr create_subsurface(const ParameterDictionary &params, const NamedText
             check_spectrum_texture(params, "mfp", c.mfp, true, "a non-negative mean free path");
         } else {
             // Whole milk in mm^-1 (Jensen et al. 2001).
-            c.sigma_a = constant_rgb(RGB(.0011f, .0024f, .014f));
-            c.sigma_s = constant_rgb(RGB(2.55f, 3.21f, 3.77f));
+            c.sigma_a = constant_rgb(RGB{.0011f, .0024f, .014f});
+            c.sigma_s = constant_rgb(RGB{2.55f, 3.21f, 3.77f});
         }
     }
     c.scale = params.get_one_float("scale", 1);
