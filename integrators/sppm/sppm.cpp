@@ -123,6 +123,18 @@ struct PixelState {
     std::vector<VisiblePoint> medium_vps;
 };
 
+// The exit `at` (with its exit lobe) of a camera path's jump through a profile solid, reached
+// with throughput beta, as the pixel's second visible point, with its direct lighting added to L.
+// A profile solid has no interior medium: the exit lies in the medium the entry does.
+void record_subsurface_exit(const Scene &scene, const SurfaceInteraction &at, const BSDF &exit_bsdf, int depth,
+                            const SampledSpectrum &beta, const SampledWavelengths &lambda, const Medium *medium,
+                            IterationPixelContext &ctx, SampledSpectrum &L, VisiblePoint &subsurface_vp) {
+    L += beta * sample_direct_lighting(scene, at, exit_bsdf, LightSampleContext{at.p, at.n, at.shading.n}, lambda,
+                                       ctx.sampler, ctx.rays, TransportMode::Radiance,
+                                       DirectLighting::LightSamplingOnly, medium);
+    subsurface_vp = VisiblePoint{at.p, at.n, at.shading.n, at.wo, depth, exit_bsdf, nullptr, beta / at.coverage, lambda};
+}
+
 // The second visible point of a camera path that reached the profile-subsurface solid at si
 // with throughput beta (see trace_camera_path): where one BSDF sample, if it enters the solid,
 // leads through the profile, with its direct lighting added to L. Left empty otherwise.
@@ -140,12 +152,7 @@ void find_subsurface_visible_point(const Scene &scene, const SurfaceInteraction 
     if (!exit) return;
     beta *= bs->f * (abs_dot(bs->wi, si.shading.n) / bs->pdf) * exit->weight;
     if (beta.is_black()) return;
-    const SurfaceInteraction &at = exit->si;
-    // A profile solid has no interior medium: the exit lies in the medium the entry does.
-    L += beta * sample_direct_lighting(scene, at, exit->bsdf, LightSampleContext{at.p, at.n, at.shading.n}, lambda,
-                                       sampler, ctx.rays, TransportMode::Radiance, DirectLighting::LightSamplingOnly,
-                                       medium);
-    subsurface_vp = VisiblePoint{at.p, at.n, at.shading.n, at.wo, depth, exit->bsdf, nullptr, beta / at.coverage, lambda};
+    record_subsurface_exit(scene, exit->si, exit->bsdf, depth, beta, lambda, medium, ctx, L, subsurface_vp);
 }
 
 // Direct lighting and the visible points of one pixel's camera path.
@@ -250,14 +257,9 @@ void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const 
             const std::optional<WalkScatter> s = walk.scatter();
             if (!s) return;
             if (s->profile) {
-                if (!walk.jump(*s->profile)) return;
-                const SurfaceInteraction &at = walk.hit();
-                const BSDF &exit_bsdf = walk.vertex().bsdf;
-                L += walk.beta * sample_direct_lighting(scene, at, exit_bsdf, LightSampleContext{at.p, at.n, at.shading.n},
-                                                        lambda, sampler, ctx.rays, TransportMode::Radiance,
-                                                        DirectLighting::LightSamplingOnly, walk.medium());
-                state.subsurface_vp = VisiblePoint{at.p,  at.n,    at.shading.n, at.wo, depth, exit_bsdf, nullptr,
-                                                   walk.beta / at.coverage, lambda};
+                if (walk.jump(*s->profile))
+                    record_subsurface_exit(scene, walk.hit(), walk.vertex().bsdf, depth, walk.beta, lambda,
+                                           walk.medium(), ctx, L, state.subsurface_vp);
                 return;
             }
             bsdf_pdf = s->pdf_fwd;
