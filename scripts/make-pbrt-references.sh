@@ -85,3 +85,16 @@ while read -r scene spp; do
     -o "$out/$scene.exr"
   echo "$scene: $spp spp x 2, $(oiiotool "$out/$scene.exr" --ch R,G,B --printstats | grep Avg)"
 done <<< "$table"
+
+# pbrt-v4's spectral and G-buffer films (scenes/film), stored whole: every channel pbrt-v4
+# writes, as float, from one run.
+film_table="film/spectral 4096
+film/gbuffer 1024"
+while read -r scene spp; do
+  if [ ${#want[@]} -gt 0 ] && [[ ! " ${want[*]} " == *" $scene "* ]]; then continue; fi
+  "$PBRT" --quiet --nthreads 2 --spp "$spp" --seed 1 --outfile "$tmp/run.exr" "scenes/$scene.pbrt"
+  mkdir -p "$(dirname "$out/$scene.exr")"
+  oiiotool "$tmp/run.exr" -d float --compression zip \
+    --attrib "pbrt-v4:command" "pbrt --nthreads 2 --spp $spp --seed 1 scenes/$scene.pbrt" -o "$out/$scene.exr"
+  echo "$scene: $spp spp, $(oiiotool "$out/$scene.exr" --printstats | grep Avg)"
+done <<< "$film_table"

@@ -15,11 +15,6 @@ float sample_visible_wavelengths(float u) {
     return 538 - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
 }
 
-namespace {
-constexpr float kRange = LambdaMax - LambdaMin;
-float wrap(float lambda) { return lambda > LambdaMax ? lambda - kRange : lambda; }
-} // namespace
-
 SampledWavelengths SampledWavelengths::sample_visible(float u) {
     SampledWavelengths s;
     // Rotations of the primary sample u (see header): member i is the visible density's inverse
@@ -34,13 +29,17 @@ SampledWavelengths SampledWavelengths::sample_visible(float u) {
     return s;
 }
 
-SampledWavelengths SampledWavelengths::sample_uniform(float u) {
+SampledWavelengths SampledWavelengths::sample_uniform(float u, float lambda_min, float lambda_max) {
     SampledWavelengths s;
-    s.lambda_[0] = lerp(u, LambdaMin, LambdaMax);
-    float delta = kRange / NumWavelengths;
-    for (int i = 1; i < NumWavelengths; ++i) s.lambda_[i] = wrap(s.lambda_[0] + i * delta);
-    s.pdf_ = SampledSpectrum(1 / kRange);
-    s.hero_pdf_ = 1 / kRange;
+    const float range = lambda_max - lambda_min;
+    s.lambda_[0] = lerp(u, lambda_min, lambda_max);
+    const float delta = range / NumWavelengths;
+    for (int i = 1; i < NumWavelengths; ++i) {
+        float lambda = s.lambda_[0] + i * delta;
+        s.lambda_[i] = lambda > lambda_max ? lambda - range : lambda;
+    }
+    s.pdf_ = SampledSpectrum(1 / range);
+    s.hero_pdf_ = 1 / range;
     return s;
 }
 

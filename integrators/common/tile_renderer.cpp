@@ -18,6 +18,12 @@ namespace caustica {
 SampledWavelengths sample_wavelengths(const Scene &scene, float u) {
     if (scene.overrides.wavelength > 0) return SampledWavelengths::fixed(scene.overrides.wavelength);
     if (scene.achromatic_wavelength > 0) return SampledWavelengths::fixed(scene.achromatic_wavelength);
+    if (const SpectralBuckets *buckets = scene.film->spectral()) {
+        // pbrt-v4's spectral film samples its own range uniformly, so every bucket gets samples.
+        SampledWavelengths lambda = SampledWavelengths::sample_uniform(u, buckets->lambda_min(), buckets->lambda_max());
+        if (scene.overrides.single_wavelength) lambda.terminate_secondary();
+        return lambda;
+    }
     if (scene.overrides.single_wavelength) return SampledWavelengths::sample_single(u);
     return SampledWavelengths::sample_visible(u);
 }

@@ -57,7 +57,8 @@ SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
       photons_per_iteration_(params.get_one_int("photonsperiteration", -1)),
       wavelength_groups_(params.get_one_int("wavelengthgroups", 16)),
       seed_(uint64_t(params.get_one_int("seed", 0)) + scene.overrides.seed),
-      photon_search_(read_photon_search(params)) {
+      photon_search_(read_photon_search(params)),
+      buckets_(scene.film->spectral() ? scene.film->spectral()->count() : 0) {
     if (max_depth_ < 0 || max_depth_ > StoredPhoton::MaxDepth)
         throw InputError(params.location("maxdepth"),
                          "\"maxdepth\" must lie in [0, " + std::to_string(StoredPhoton::MaxDepth) + "]");
@@ -86,14 +87,16 @@ constexpr float kGamma = 2.f / 3.f;
 
 } // namespace
 
-void SPPM::KernelEstimate::update(const RGB &phi, float m, int dimension) {
+float SPPM::KernelEstimate::update(const RGB &phi, float m, int dimension) {
     const float n_new = photons + kGamma * m;
     const float ratio = n_new / (photons + m);
     const float r_new = radius * (dimension == 2 ? std::sqrt(ratio) : std::cbrt(ratio));
     const float shrink = r_new / radius;
-    tau = (tau + phi) * (dimension == 2 ? sqr(shrink) : shrink * sqr(shrink));
+    const float scale = dimension == 2 ? sqr(shrink) : shrink * sqr(shrink);
+    tau = (tau + phi) * scale;
     photons = n_new;
     radius = r_new;
+    return scale;
 }
 
 namespace {
@@ -117,6 +120,7 @@ struct VisiblePoint {
 // camera sees there entered the solid: see trace_camera_path.
 struct PixelState {
     RGB direct;
+    std::vector<double> direct_buckets; // a spectral film's
     VisiblePoint vp, subsurface_vp;
     // The camera path's scattering events in media, where it gathers the photons of volumetric
     // caustics (see trace_camera_path).
@@ -350,7 +354,9 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         initial.surface.radius = initial_radius_;
         initial.medium.radius = initial_medium_radius_;
         estimates_.assign(pixels.size(), initial);
+        bucket_estimates_.assign(pixels.size() * 3 * buckets_, 0.0);
     }
+    const int buckets = buckets_;
     if (estimates_.size() != pixels.size())
         throw std::runtime_error("sppm: resumed without the estimates of the pixels");
     const size_t photon_count = photons_per_iteration_ > 0 ? size_t(photons_per_iteration_) : pixels.size();
@@ -388,6 +394,10 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                     L = SampledSpectrum(0.f);
                 }
                 state.direct = film.sensor_value(L, lambda);
+                if (buckets > 0) {
+                    state.direct_buckets.assign(buckets, 0.0);
+                    film.add_bucket_values(L, lambda, state.direct_buckets.data());
+                }
             });
             if (!completed) return false;
 
@@ -420,7 +430,8 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             // no rays and is not interrupted, so that every pixel's statistics describe the same
             // number of completed iterations.
             // The sensor value of the photons of group g within radius of vp; gathered counts them.
-            auto gather = [&](const VisiblePoint &vp, int g, float radius, int &gathered) -> RGB {
+            // A spectral film's buckets are added to bucket_phi.
+            auto gather = [&](const VisiblePoint &vp, int g, float radius, int &gathered, double *bucket_phi) -> RGB {
                 SampledSpectrum phi(0.f);
                 int count = 0;
                 // A photon and a visible point of the same group share wavelengths; if either
@@ -466,6 +477,7 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 // All photons of the iteration over the group's: the final normalisation divides
                 // by the total photon count.
                 const float group_scale = float(photon_count) / float(groups.light_path_count(g));
+                if (buckets > 0) film.add_bucket_values(flux * group_scale, vp.lambda, bucket_phi);
                 return film.sensor_value(flux, vp.lambda) * group_scale;
             };
             tbb::parallel_for(size_t(0), pixels.size(), [&](size_t index) {
@@ -478,12 +490,24 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 // are those of all the camera path's medium vertices within its medium radius.
                 RGB surface_phi, medium_phi;
                 int surface_gathered = 0, medium_gathered = 0;
+                // A spectral film's buckets of the two gathers.
+                std::vector<double> phi_buckets(2 * size_t(buckets), 0.0);
+                double *surface_phi_buckets = phi_buckets.data(), *medium_phi_buckets = surface_phi_buckets + buckets;
                 for (const VisiblePoint *vp : {&state.vp, &state.subsurface_vp})
-                    if (vp->exists()) surface_phi += gather(*vp, g, estimate.surface.radius, surface_gathered);
+                    if (vp->exists()) surface_phi += gather(*vp, g, estimate.surface.radius, surface_gathered, surface_phi_buckets);
                 for (const VisiblePoint &vp : state.medium_vps)
-                    medium_phi += gather(vp, g, estimate.medium.radius, medium_gathered);
-                if (surface_gathered > 0) estimate.surface.update(surface_phi, float(surface_gathered), 2);
-                if (medium_gathered > 0) estimate.medium.update(medium_phi, float(medium_gathered), 3);
+                    medium_phi += gather(vp, g, estimate.medium.radius, medium_gathered, medium_phi_buckets);
+                float surface_scale = 1, medium_scale = 1;
+                if (surface_gathered > 0) surface_scale = estimate.surface.update(surface_phi, float(surface_gathered), 2);
+                if (medium_gathered > 0) medium_scale = estimate.medium.update(medium_phi, float(medium_gathered), 3);
+                if (buckets > 0) {
+                    double *b = &bucket_estimates_[index * 3 * buckets];
+                    for (int i = 0; i < buckets; ++i) {
+                        b[i] += state.direct_buckets[i];
+                        if (surface_gathered > 0) b[buckets + i] = (b[buckets + i] + surface_phi_buckets[i]) * surface_scale;
+                        if (medium_gathered > 0) b[2 * buckets + i] = (b[2 * buckets + i] + medium_phi_buckets[i]) * medium_scale;
+                    }
+                }
             });
             return true;
         });
@@ -502,10 +526,17 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         for (int x = bounds.min.x; x < bounds.max.x; ++x, ++index) {
             const PixelEstimate &estimate = estimates_[index];
             const float r_surface = estimate.surface.radius, r_medium = estimate.medium.radius;
-            RGB value = estimate.direct_sum / float(iterations) +
-                        estimate.surface.tau / float(emitted * Pi * sqr(r_surface)) +
-                        estimate.medium.tau / float(emitted * 4 / 3 * Pi * r_medium * sqr(r_medium));
-            film.add_sensor_value({x, y}, value, 1);
+            const double surface_measure = emitted * Pi * sqr(r_surface);
+            const double medium_measure = emitted * 4 / 3 * Pi * r_medium * sqr(r_medium);
+            RGB value = estimate.direct_sum / float(iterations) + estimate.surface.tau / float(surface_measure) +
+                        estimate.medium.tau / float(medium_measure);
+            std::vector<double> value_buckets(buckets);
+            for (int i = 0; i < buckets; ++i) {
+                const double *b = &bucket_estimates_[(index * 3) * buckets];
+                value_buckets[i] = b[i] / iterations + (r_surface > 0 ? b[buckets + i] / surface_measure : 0) +
+                                   (r_medium > 0 ? b[2 * buckets + i] / medium_measure : 0);
+            }
+            film.add_sensor_value({x, y}, value, 1, buckets > 0 ? value_buckets.data() : nullptr);
         }
 }
 
@@ -513,6 +544,8 @@ void SPPM::save_state(std::ostream &out) const {
     const uint64_t count = estimates_.size();
     out.write(reinterpret_cast<const char *>(&count), sizeof count);
     out.write(reinterpret_cast<const char *>(estimates_.data()), std::streamsize(count * sizeof(PixelEstimate)));
+    out.write(reinterpret_cast<const char *>(bucket_estimates_.data()),
+              std::streamsize(bucket_estimates_.size() * sizeof(double)));
 }
 
 void SPPM::restore_state(std::istream &in) {
@@ -520,7 +553,9 @@ void SPPM::restore_state(std::istream &in) {
     in.read(reinterpret_cast<char *>(&count), sizeof count);
     if (!in || count > (uint64_t(1) << 32)) throw std::runtime_error("sppm: damaged pixel estimates");
     estimates_.resize(count);
+    bucket_estimates_.assign(count * 3 * buckets_, 0.0);
     in.read(reinterpret_cast<char *>(estimates_.data()), std::streamsize(count * sizeof(PixelEstimate)));
+    in.read(reinterpret_cast<char *>(bucket_estimates_.data()), std::streamsize(bucket_estimates_.size() * sizeof(double)));
     if (!in) throw std::runtime_error("sppm: damaged pixel estimates");
 }
 

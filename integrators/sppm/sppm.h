@@ -57,8 +57,9 @@ class SPPM final : public Integrator {
 
         // Keeps gamma of the m photons just gathered (flux phi) and shrinks the kernel's
         // measure (r^dimension) in the same proportion (Hachisuka and Jensen 2009, eqs. 6-7;
-        // the volume form is Knaus and Zwicker 2011's).
-        void update(const RGB &phi, float m, int dimension);
+        // the volume form is Knaus and Zwicker 2011's). Returns the factor tau + phi was scaled
+        // by, for the spectral film's buckets.
+        float update(const RGB &phi, float m, int dimension);
     };
     // What a pixel's estimate carries from one iteration to the next.
     struct PixelEstimate {
@@ -73,6 +74,10 @@ class SPPM final : public Integrator {
     uint64_t seed_;
     PhotonSearch photon_search_;
     std::vector<PixelEstimate> estimates_; // row by row over the film's pixel bounds
+    // With a spectral film, the buckets of each pixel's direct_sum, surface and medium tau, in
+    // that order (3 x the film's bucket count per pixel, in the order of estimates_).
+    std::vector<double> bucket_estimates_;
+    int buckets_ = 0; // the spectral film's bucket count, or 0
 };
 
 } // namespace caustica

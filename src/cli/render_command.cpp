@@ -105,6 +105,9 @@ int run_render(const RenderCommandOptions &options) {
     } else if (!exr_path.empty() && !ends_with(exr_path, ".exr")) {
         throw InputError("output \"" + exr_path + "\" must end in .exr or .png");
     }
+    if (exr_path.empty() && (scene->film->spectral() || scene->film->gbuffer()))
+        warning(std::string("a PNG holds only the RGB image: the ") + (scene->film->spectral() ? "spectral" : "G-buffer") +
+                " film's other channels are written only to an OpenEXR file (--output NAME.exr)");
 
     int threads = worker_thread_count(options.threads);
     tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, threads);
@@ -152,9 +155,11 @@ int run_render(const RenderCommandOptions &options) {
     });
     progress.finish();
 
-    Image image = session.image(stats);
+    std::map<std::string, std::string> metadata = render_metadata(*scene, stats, options.seed, options.scene_path);
+    Image image = session.image(stats, &metadata);
 
-    if (!exr_path.empty()) write_exr(exr_path, image, render_metadata(*scene, stats, options.seed, options.scene_path));
+    if (!exr_path.empty())
+        write_exr(exr_path, image, metadata, scene->film->save_fp16() ? ExrPixelType::Half : ExrPixelType::Float);
     if (!png_path.empty()) write_png(png_path, image);
     if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads);
     // Only once the image is written: a render killed before that can still be resumed.

@@ -1,5 +1,7 @@
 #include "cli/render_session.h"
 
+#include "integrators/common/visible_surfaces.h"
+
 #include "core/error.h"
 #include "parser/scene_description.h"
 
@@ -69,10 +71,16 @@ float test_fault_bias(const std::string &integrator_name) {
 
 } // namespace
 
-Image RenderSession::image(const RenderStats &stats) const {
-    Image image = scene->film->get_image(integrator->splat_scale(*scene, stats));
+Image RenderSession::image(const RenderStats &stats, std::map<std::string, std::string> *metadata) const {
+    Image image = scene->film->get_image(integrator->splat_scale(*scene, stats), metadata);
     if (const float bias = test_fault_bias(scene->integrator_name); bias != 1)
         for (float &v : image.rgb) v *= bias;
+    // The visible surfaces converge within a few dozen samples (they average smooth quantities
+    // over the pixel): more would only add time.
+    constexpr int MaxVisibleSurfaceSamples = 64;
+    if (scene->film->gbuffer())
+        add_visible_surface_layers(*scene, std::clamp(stats.samples_per_pixel, 1, MaxVisibleSurfaceSamples),
+                                   stats.samples_per_pixel, image);
     return image;
 }
 

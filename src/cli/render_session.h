@@ -30,8 +30,10 @@ struct RenderSession {
 
     // Renders the scene under `budget` into its film, filling in `stats`.
     void render(const RenderBudget &budget, RenderStats &stats, const ProgressCallback &progress);
-    // The film's image after render() (light-tracing splats scaled as the integrator says).
-    Image image(const RenderStats &stats) const;
+    // The film's image after render() (light-tracing splats scaled as the integrator says),
+    // with a G-buffer film's visible-surface layers; the film's own metadata (a spectral film's
+    // layout) are added to `metadata` when given.
+    Image image(const RenderStats &stats, std::map<std::string, std::string> *metadata = nullptr) const;
 };
 
 // Which warnings creating a session prints: building the scene and creating the integrator.

@@ -1,6 +1,7 @@
 #include "film/film.h"
 
 #include "spectral/camera_sensor_data.h"
+#include "spectral/cie.h"
 #include "spectral/named_spectra.h"
 
 #include <cassert>
@@ -27,6 +28,7 @@ Film::Film(Vec2i full_resolution, PixelBounds pixel_bounds, std::unique_ptr<Filt
 Film::Pixel *Film::camera_pixels() {
     std::call_once(pixels_allocated_, [this] {
         if (pixels_.empty()) pixels_.resize(pixel_count());
+        if (spectral_ && bucket_sums_.empty()) bucket_sums_.resize(pixel_count() * spectral_->count());
     });
     return pixels_.data();
 }
@@ -40,8 +42,58 @@ FilmExtent Film::extent() const {
             diagonal_};
 }
 
+void Film::set_spectral(const SpectralBuckets &buckets) {
+    spectral_ = buckets;
+    bucket_splats_ = std::make_unique<SplatBuffer>(pixel_bounds_.min, pixel_bounds_.max, *filter_, buckets.count());
+}
+
+void Film::set_gbuffer(bool camera_space) {
+    gbuffer_ = true;
+    gbuffer_camera_space_ = camera_space;
+    if (moments_.empty()) moments_.assign(pixel_count(), Moments{});
+}
+
 void Film::set_achromatic(const Spectrum &colour, float lambda) {
     achromatic_rgb_ = sensor_.to_sensor_rgb(colour) / colour(lambda);
+    achromatic_lambda_ = lambda;
+    if (spectral_) {
+        // Each bucket's mean of the colour, at every integer wavelength in it (the resolution of
+        // tabulated spectra) or its centre if it holds none.
+        achromatic_buckets_.assign(spectral_->count(), 0);
+        std::vector<int> counts(spectral_->count(), 0);
+        for (int l = int(std::ceil(spectral_->lambda_min())); l <= int(std::floor(spectral_->lambda_max())); ++l) {
+            const int b = spectral_->bucket_of(float(l));
+            achromatic_buckets_[b] += colour(float(l));
+            ++counts[b];
+        }
+        for (int b = 0; b < spectral_->count(); ++b)
+            achromatic_buckets_[b] = (counts[b] > 0 ? achromatic_buckets_[b] / counts[b] : colour(spectral_->centre(b))) /
+                                     colour(lambda);
+    }
+}
+
+template <typename Add>
+void Film::for_each_bucket_value(const SampledSpectrum &L_in, const SampledWavelengths &lambda, Add &&add) const {
+    // pbrt-v4 clamps the spectral value by its largest wavelength.
+    SampledSpectrum L = L_in;
+    const float lm = L.max_value();
+    if (lm > max_component_value_) L *= max_component_value_ / lm;
+    if (monochromatic_) {
+        // One wavelength only: its radiance goes to its bucket.
+        if (spectral_->contains(lambda[0])) add(spectral_->bucket_of(lambda[0]), double(safe_div(L, lambda.pdf()).average()));
+    } else if (achromatic_rgb_) {
+        const double per_unit = L.average();
+        if (per_unit != 0)
+            for (int b = 0; b < spectral_->count(); ++b) add(b, per_unit * achromatic_buckets_[b]);
+    } else {
+        const SampledSpectrum estimate = safe_div(L, lambda.pdf()) / (float(NumWavelengths) * spectral_->width());
+        for (int i = 0; i < NumWavelengths; ++i)
+            if (estimate[i] != 0 && spectral_->contains(lambda[i])) add(spectral_->bucket_of(lambda[i]), double(estimate[i]));
+    }
+}
+
+void Film::add_bucket_values(const SampledSpectrum &L, const SampledWavelengths &lambda, double *out) const {
+    for_each_bucket_value(L, lambda, [out](int b, double v) { out[b] += v; });
 }
 
 RGB Film::sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const {
@@ -65,9 +117,13 @@ void Film::add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavele
                       float filter_weight) {
     assert(!L.has_non_finite());
     add_sensor_value(pixel, sensor_value(L, lambda), filter_weight);
+    if (spectral_ && pixel_bounds_.contains(pixel)) {
+        double *sums = &bucket_sums_[index(pixel) * spectral_->count()];
+        for_each_bucket_value(L, lambda, [&](int b, double v) { sums[b] += double(filter_weight) * v; });
+    }
 }
 
-void Film::add_sensor_value(Vec2i pixel, RGB v, float filter_weight) {
+void Film::add_sensor_value(Vec2i pixel, RGB v, float filter_weight, const double *bucket_values) {
     assert(std::isfinite(filter_weight));
     assert(pixel_bounds_.contains(pixel));
     // Outside a crop window there is no storage: dropping the sample keeps a caller that
@@ -76,6 +132,10 @@ void Film::add_sensor_value(Vec2i pixel, RGB v, float filter_weight) {
     Pixel &p = camera_pixels()[index(pixel)];
     for (int c = 0; c < 3; ++c) p.rgb_sum[c] += double(filter_weight) * v[c];
     p.weight_sum += filter_weight;
+    if (spectral_ && bucket_values) {
+        double *sums = &bucket_sums_[index(pixel) * spectral_->count()];
+        for (int b = 0; b < spectral_->count(); ++b) sums[b] += double(filter_weight) * bucket_values[b];
+    }
     if (!moments_.empty()) {
         RGB out = monochromatic_ ? v : output_from_sensor_ * v;
         Moments &m = moments_[index(pixel)];
@@ -90,9 +150,20 @@ void Film::add_sensor_value(Vec2i pixel, RGB v, float filter_weight) {
 void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda) {
     assert(!L.has_non_finite());
     splats_.add(p_raster, sensor_value(L, lambda));
+    if (!spectral_) return;
+    // Four buckets per record; an achromatic sample fills every bucket.
+    SplatValues values;
+    for_each_bucket_value(L, lambda, [&](int b, double v) {
+        values.add(b, float(v));
+        if (values.count == int(values.value.size())) {
+            bucket_splats_->add(p_raster, values);
+            values = SplatValues{};
+        }
+    });
+    if (values.count > 0) bucket_splats_->add(p_raster, values);
 }
 
-Image Film::get_image(double splat_scale) const {
+Image Film::get_image(double splat_scale, std::map<std::string, std::string> *metadata) const {
     splats_.flush();
     const std::vector<int64_t> &splats = splats_.sums();
     Image image(pixel_bounds_.width(), pixel_bounds_.height());
@@ -115,7 +186,7 @@ Image Film::get_image(double splat_scale) const {
             if (!monochromatic_) v = output_from_sensor_ * v;
             for (int c = 0; c < 3; ++c) image.at(x, y, c) = v[c];
         }
-    if (!moments_.empty()) {
+    if (variance_layer_) {
         Image::Layer variance{"variance", std::vector<float>(image.rgb.size(), 0.f)};
         for (size_t i = 0; i < moments_.size(); ++i) {
             const Moments &m = moments_[i];
@@ -128,10 +199,55 @@ Image Film::get_image(double splat_scale) const {
         }
         image.layers.push_back(std::move(variance));
     }
+    if (gbuffer_) add_sample_variance_layers(image);
+    if (spectral_) add_bucket_channels(image, splat_scale, metadata);
     if (splats_.take_overflow())
         warning("light-tracing contributions exceeded the film's fixed-point range; the image "
                 "is wrong where they landed");
     return image;
+}
+
+// pbrt-v4's G-buffer variance layers: each pixel's sample variance s^2 of its camera samples
+// (not of their mean), and s^2 over the mean.
+void Film::add_sample_variance_layers(Image &image) const {
+    Image::Layer variance{"Variance", std::vector<float>(image.rgb.size(), 0.f)};
+    Image::Layer relative{"RelativeVariance", std::vector<float>(image.rgb.size(), 0.f)};
+    for (size_t i = 0; i < moments_.size(); ++i) {
+        const Moments &m = moments_[i];
+        if (m.count < 2) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double mean = m.sum[c] / m.count;
+            const double s2 = std::max(0.0, (m.sum_sq[c] - m.count * mean * mean) / (m.count - 1));
+            variance.rgb[i * 3 + c] = float(s2);
+            relative.rgb[i * 3 + c] = mean != 0 ? float(s2 / mean) : 0.f;
+        }
+    }
+    image.layers.push_back(std::move(variance));
+    image.layers.push_back(std::move(relative));
+}
+
+void Film::add_bucket_channels(Image &image, double splat_scale, std::map<std::string, std::string> *metadata) const {
+    bucket_splats_->flush();
+    const std::vector<int64_t> &splats = bucket_splats_->sums();
+    const int n = spectral_->count();
+    const size_t pixels = size_t(image.width) * image.height;
+    for (int b = 0; b < n; ++b) {
+        Image::Channel channel{spectral_->channel_name(b), std::vector<float>(pixels, 0.f)};
+        for (size_t i = 0; i < pixels; ++i) {
+            double value = 0;
+            if (!pixels_.empty() && pixels_[i].weight_sum != 0) value = bucket_sums_[i * n + b] / pixels_[i].weight_sum;
+            if (!splats.empty()) value += splat_scale * double(splats[i * n + b]) * SplatBuffer::kUnit / filter_integral_;
+            channel.values[i] = float(value * CIE_Y_integral);
+        }
+        image.channels.push_back(std::move(channel));
+    }
+    if (bucket_splats_->take_overflow())
+        warning("light-tracing contributions exceeded the spectral film's fixed-point range; its buckets are "
+                "wrong where they landed");
+    if (metadata) {
+        (*metadata)["spectralLayoutVersion"] = "1.0";
+        (*metadata)["emissiveUnits"] = "W.m^-2.sr^-1";
+    }
 }
 
 namespace {
@@ -168,6 +284,12 @@ void Film::save_state(std::ostream &out) const {
     splats_.flush();
     write_array(out, splats_.sums());
     write_u64(out, splats_.overflowed() ? 1 : 0);
+    if (spectral_) {
+        write_array(out, bucket_sums_);
+        bucket_splats_->flush();
+        write_array(out, bucket_splats_->sums());
+        write_u64(out, bucket_splats_->overflowed() ? 1 : 0);
+    }
 }
 
 void Film::restore_state(std::istream &in) {
@@ -179,12 +301,28 @@ void Film::restore_state(std::istream &in) {
     read_array(in, splats, pixel_count() * 3, true);
     const uint64_t overflow = read_u64(in);
     if (!in || overflow > 1) throw std::runtime_error("film state: truncated");
+    std::vector<double> bucket_sums;
+    std::vector<int64_t> bucket_splats;
+    uint64_t bucket_overflow = 0;
+    if (spectral_) {
+        read_array(in, bucket_sums, pixel_count() * spectral_->count(), true);
+        read_array(in, bucket_splats, pixel_count() * spectral_->count(), true);
+        bucket_overflow = read_u64(in);
+        if (!in || bucket_overflow > 1 || bucket_sums.empty() != pixels.empty())
+            throw std::runtime_error("film state: truncated");
+    }
     // A store the film has allocated keeps its size: camera_pixels() hands out its address.
     if (pixels.empty() && !pixels_.empty()) pixels.assign(pixels_.size(), Pixel{});
     pixels_ = std::move(pixels);
     moments_ = std::move(moments);
     splats_.restore(std::move(splats));
     splats_.set_overflow(overflow != 0);
+    if (spectral_) {
+        if (bucket_sums.empty() && !bucket_sums_.empty()) bucket_sums.assign(bucket_sums_.size(), 0.0);
+        bucket_sums_ = std::move(bucket_sums);
+        bucket_splats_->restore(std::move(bucket_splats));
+        bucket_splats_->set_overflow(bucket_overflow != 0);
+    }
 }
 
 CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter, const Shutter *shutter) {
@@ -262,24 +400,29 @@ PixelBounds read_pixel_bounds(const ParameterDictionary &params, Vec2i full, con
     return bounds;
 }
 
+// pbrt-v4's spectral film parameters; pbrt-v4 renders wavelengths in [360, 830] nm only.
+SpectralBuckets read_spectral_buckets(const ParameterDictionary &params) {
+    const int count = params.get_one_int("nbuckets", 16);
+    if (count < 1 || count > 4096)
+        throw InputError(params.location("nbuckets"), "\"nbuckets\" must be between 1 and 4096");
+    const float lo = params.get_one_float("lambdamin", LambdaMin), hi = params.get_one_float("lambdamax", LambdaMax);
+    if (!(lo >= LambdaMin && lo <= LambdaMax))
+        throw InputError(params.location("lambdamin"), "\"lambdamin\" must lie in [360, 830] nm, the wavelengths rendered");
+    if (!(hi >= LambdaMin && hi <= LambdaMax))
+        throw InputError(params.location("lambdamax"), "\"lambdamax\" must lie in [360, 830] nm, the wavelengths rendered");
+    if (!(lo < hi))
+        throw InputError(params.location("lambdamax"), "\"lambdamax\" must be greater than \"lambdamin\"");
+    return SpectralBuckets(count, lo, hi);
+}
+
 } // namespace
 
 std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictionary &params,
                                   const RGBColorSpace *color_space, std::unique_ptr<Filter> filter,
                                   const SourceLocation &loc, const FilmOverrides &overrides,
                                   float exposure_time) {
-    if (type == "gbuffer" || type == "spectral") {
-        warning(loc, "the \"" + type + "\" film is written as an \"rgb\" film (RGB channels only)");
-        // Their own parameters are covered by the warning above.
-        if (type == "gbuffer") params.get_one_string("coordinatesystem", "");
-        if (type == "spectral") {
-            params.get_one_int("nbuckets", 16);
-            params.get_one_float("lambdamin", LambdaMin);
-            params.get_one_float("lambdamax", LambdaMax);
-        }
-    } else if (type != "rgb") {
+    if (type != "rgb" && type != "gbuffer" && type != "spectral")
         throw InputError(loc, "\"" + type + "\": unknown film type");
-    }
     const RGBColorSpace &output = color_space ? *color_space : RGBColorSpace::srgb();
 
     Vec2i full{params.get_one_int("xresolution", 1280), params.get_one_int("yresolution", 720)};
@@ -331,6 +474,17 @@ std::unique_ptr<Film> create_film(const std::string &type, const ParameterDictio
     auto film = std::make_unique<Film>(full, bounds, std::move(filter), output, *sensor, max_component,
                                        filename, fp16);
     film->set_diagonal(diagonal_mm / 1000);
+    if (type != "rgb" && !filename.ends_with(".exr"))
+        throw InputError(params.location("filename"),
+                         "\"" + filename + "\": the \"" + type + "\" film writes only OpenEXR files (.exr)");
+    if (type == "spectral") film->set_spectral(read_spectral_buckets(params));
+    if (type == "gbuffer") {
+        const std::string system = params.get_one_string("coordinatesystem", "camera");
+        if (system != "camera" && system != "world")
+            throw InputError(params.location("coordinatesystem"),
+                             "\"coordinatesystem\" must be \"camera\" or \"world\", not \"" + system + "\"");
+        film->set_gbuffer(system == "camera");
+    }
     return film;
 }
 

@@ -15,6 +15,19 @@
 //
 // Values are kept in the sensor's space (XYZ for the CIE 1931 sensor) as pbrt-v4 does, and
 // converted to the output colour space's linear RGB when the image is made.
+//
+// pbrt-v4's "spectral" film (set_spectral) also keeps the spectrum in wavelength buckets
+// (spectral_buckets.h). Each sample adds to bucket b its estimate of the radiance averaged over
+// the bucket, (1/n) sum over the lanes i in b of L_i / (p_i width_b), which is unbiased for any
+// wavelength density, as the RGB value is; the image holds the weighted average times
+// CIE_Y_integral, pbrt-v4's scale (it undoes the photometric normalisation of lights' spectra),
+// without the sensor's imaging ratio, as in pbrt-v4. Light-tracing splats fill the buckets the
+// same way. (pbrt-v4 averages its camera samples per bucket instead, which needs its uniform
+// wavelength density, and leaves buckets empty in its light tracer.)
+//
+// pbrt-v4's "gbuffer" film (set_gbuffer) keeps what the RGB film keeps, plus the camera
+// samples' moments; its geometric layers come from the first visible surfaces, which the
+// renderer traces for the image (see integrators/common/visible_surfaces.h).
 #pragma once
 
 #include "camera/camera.h"
@@ -23,12 +36,14 @@
 #include "film/image.h"
 #include "film/image_io.h"
 #include "film/pixel_sensor.h"
+#include "film/spectral_buckets.h"
 #include "film/splat_buffer.h"
 #include "params/parameters.h"
 #include "sampler/sampler.h"
 
 #include <atomic>
 #include <iosfwd>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -70,6 +85,17 @@ class Film {
     // only the realistic camera uses; 35 mm unless set.
     void set_diagonal(float metres) { diagonal_ = metres; }
 
+    // pbrt-v4's "spectral" film: also keep the spectrum in `buckets` (see above). Call it before
+    // any sample is added.
+    void set_spectral(const SpectralBuckets &buckets);
+    const SpectralBuckets *spectral() const { return spectral_ ? &*spectral_ : nullptr; }
+    // pbrt-v4's "gbuffer" film: also keep the moments of the camera samples for the "Variance"
+    // and "RelativeVariance" layers. camera_space: positions and normals in camera space (pbrt-v4's
+    // "coordinatesystem" "camera") rather than world space.
+    void set_gbuffer(bool camera_space);
+    bool gbuffer() const { return gbuffer_; }
+    bool gbuffer_camera_space() const { return gbuffer_camera_space_; }
+
     // Monochromatic rendering (`--wavelength`): a sample's value is the grey level
     // (1/n) sum_j L_j / pdf_j (times the imaging ratio) in every channel, with no colour
     // conversion.
@@ -83,7 +109,10 @@ class Film {
     // get_image() adds a "variance" layer: the estimated variance of each pixel's mean
     // (s^2 / n). It assumes equal sample weights, which pbrt's filter importance sampling gives
     // for non-negative filters; light-tracing splats are not included.
-    void enable_variance() { moments_.assign(pixel_count(), Moments{}); }
+    void enable_variance() {
+        variance_layer_ = true;
+        moments_.assign(pixel_count(), Moments{});
+    }
     bool monochromatic() const { return monochromatic_; }
 
     // A camera sample for `pixel`, which must lie inside pixel_bounds() (iterate those, not the
@@ -91,19 +120,24 @@ class Film {
     // finite: integrators count and drop non-finite estimates before they reach the film.
     void add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavelengths &lambda,
                     float filter_weight);
-    // A sample already converted with sensor_value(): for estimators that combine values of
-    // several wavelength sets per pixel before adding them (progressive photon mapping).
-    void add_sensor_value(Vec2i pixel, RGB value, float filter_weight);
+    // A sample already converted with sensor_value() and, for a spectral film, bucket_values()
+    // (else null): for estimators that combine values of several wavelength sets per pixel before
+    // adding them (progressive photon mapping).
+    void add_sensor_value(Vec2i pixel, RGB value, float filter_weight, const double *bucket_values = nullptr);
     // A spectral value in the sensor's space (clamped to "maxcomponentvalue").
     RGB sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const;
+    // A spectral film's per-bucket estimates of L (see above), added to out[0, buckets).
+    void add_bucket_values(const SampledSpectrum &L, const SampledWavelengths &lambda, double *out) const;
     // A light-tracing contribution at a raster position; reaches every pixel within the
     // filter's radius, weighted by the filter. Thread-safe and order-independent.
     void add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda);
 
     // The image over pixel_bounds(), in the output colour space's linear RGB: the weighted
     // average of the samples plus splat_scale times the splats divided by the filter's integral
-    // (pbrt-v4; for light tracing, splat_scale is 1 / samples per pixel).
-    Image get_image(double splat_scale) const;
+    // (pbrt-v4; for light tracing, splat_scale is 1 / samples per pixel). A spectral film adds
+    // its buckets' channels, a G-buffer film its variance layers (the rest is the renderer's).
+    // The metadata of pbrt-v4's layout are added to `metadata` when given.
+    Image get_image(double splat_scale, std::map<std::string, std::string> *metadata = nullptr) const;
 
     // Checkpoints: the accumulated samples (pixel sums, moments and splats) in this machine's
     // binary representation, so that a restored film continues bit-identically. restore_state
@@ -140,17 +174,31 @@ class Film {
     float diagonal_ = 0.035f;
     bool monochromatic_ = false;
     std::optional<RGB> achromatic_rgb_; // per unit of a sample's average, when achromatic
+    float achromatic_lambda_ = 0;
+    // A spectral film's buckets; when achromatic, each bucket's average of the colour over the
+    // colour at the traced wavelength.
+    std::optional<SpectralBuckets> spectral_;
+    std::vector<double> achromatic_buckets_;
+    bool gbuffer_ = false, gbuffer_camera_space_ = true;
+    bool variance_layer_ = false; // enable_variance() was called
 
     size_t pixel_count() const { return size_t(pixel_bounds_.width()) * pixel_bounds_.height(); }
+    void add_sample_variance_layers(Image &image) const;
+    void add_bucket_channels(Image &image, double splat_scale, std::map<std::string, std::string> *metadata) const;
+    // Calls add(bucket, value) with a spectral film's estimates of L (see above).
+    template <typename Add>
+    void for_each_bucket_value(const SampledSpectrum &L, const SampledWavelengths &lambda, Add &&add) const;
     // The camera samples' store, allocated on first use (thread-safe).
     Pixel *camera_pixels();
 
     std::vector<Pixel> pixels_;
+    std::vector<double> bucket_sums_; // a spectral film's, per pixel, with pixels_
     std::once_flag pixels_allocated_;
     std::vector<Moments> moments_; // empty unless enable_variance()
     // Mutable: making an image or a checkpoint first adds the queued splats to the sums, which
     // changes no value the film stands for.
     mutable SplatBuffer splats_;
+    mutable std::unique_ptr<SplatBuffer> bucket_splats_; // a spectral film's
 };
 
 // The camera sample for a pixel: the position within the pixel (pixel + 0.5 + a filter offset
@@ -159,8 +207,9 @@ class Film {
 // time (one get_1d(), dimension 5), and without one the time is 0.
 CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter, const Shutter *shutter = nullptr);
 
-// pbrt-v4's "rgb" film ("gbuffer" and "spectral" are accepted with a warning and written as
-// rgb): "xresolution" (1280), "yresolution" (720), "filename" ("pbrt.exr"), "cropwindow",
+// pbrt-v4's films: "rgb", "spectral" (also "nbuckets" (16), "lambdamin" (360) and "lambdamax"
+// (830)) and "gbuffer" (also "coordinatesystem": "camera" (the default) or "world"); the last two
+// write only OpenEXR. Their common parameters: "xresolution" (1280), "yresolution" (720), "filename" ("pbrt.exr"), "cropwindow",
 // "pixelbounds", "iso" (100), "whitebalance" (0: none; 6500 for camera sensors), "sensor"
 // ("cie1931", or a camera's: pixel_sensor.h), "maxcomponentvalue" (infinity), "savefp16" (false
 // here: Caustica writes full floats unless asked). exposure_time is the camera's shutter

@@ -24,6 +24,18 @@ struct Image {
         std::vector<float> rgb;
     };
     std::vector<Layer> layers;
+    // Single channels under their own names (a spectral film's "S0.550,000nm", a G-buffer's
+    // "P.X" or "u"), one float per pixel in the same order.
+    struct Channel {
+        std::string name;
+        std::vector<float> values;
+    };
+    std::vector<Channel> channels;
+    const Channel *channel(const std::string &name) const {
+        for (const Channel &c : channels)
+            if (c.name == name) return &c;
+        return nullptr;
+    }
 
     Image() = default;
     Image(int w, int h) : width(w), height(h), full_resolution{w, h}, rgb(size_t(w) * h * 3, 0.f) {}

@@ -71,6 +71,9 @@ void check_image(const std::string &path, const Image &image) {
     for (const Image::Layer &layer : image.layers)
         if (layer.rgb.size() != image.rgb.size())
             throw write_error(path, "layer \"" + layer.name + "\" does not match the image size");
+    for (const Image::Channel &channel : image.channels)
+        if (channel.values.size() != size_t(image.width) * image.height)
+            throw write_error(path, "channel \"" + channel.name + "\" does not match the image size");
 }
 
 } // namespace
@@ -91,10 +94,16 @@ void write_exr(const std::string &path, const Image &image,
         const char *names[3] = {"R", "G", "B"};
         Imf::FrameBuffer fb;
         std::vector<Imath::half> half_pixels;
+        // The single channels as half floats, when asked for.
+        std::vector<std::vector<Imath::half>> half_channels;
         if (pixel_type == ExrPixelType::Half) {
             half_pixels.resize(image.rgb.size());
             for (size_t i = 0; i < image.rgb.size(); ++i)
                 half_pixels[i] = Imath::half(std::min(image.rgb[i], 65504.f));
+            for (const Image::Channel &channel : image.channels) {
+                std::vector<Imath::half> &h = half_channels.emplace_back(channel.values.size());
+                for (size_t i = 0; i < h.size(); ++i) h[i] = Imath::half(clamp(channel.values[i], -65504.f, 65504.f));
+            }
         }
         for (int c = 0; c < 3; ++c) {
             if (pixel_type == ExrPixelType::Half) {
@@ -113,6 +122,16 @@ void write_exr(const std::string &path, const Image &image,
                 header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
                 fb.insert(channel, Imf::Slice::Make(Imf::FLOAT, layer.rgb.data() + c, data, 3 * sizeof(float)));
             }
+        for (size_t i = 0; i < image.channels.size(); ++i) {
+            const std::string &name = image.channels[i].name;
+            if (pixel_type == ExrPixelType::Half) {
+                header.channels().insert(name, Imf::Channel(Imf::HALF));
+                fb.insert(name, Imf::Slice::Make(Imf::HALF, half_channels[i].data(), data, sizeof(Imath::half)));
+            } else {
+                header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+                fb.insert(name, Imf::Slice::Make(Imf::FLOAT, image.channels[i].values.data(), data, sizeof(float)));
+            }
+        }
         Imf::OutputFile file(tmp.c_str(), header);
         file.setFrameBuffer(fb);
         file.writePixels(image.height);
@@ -149,6 +168,21 @@ Image read_exr(const std::string &path, std::map<std::string, std::string> *meta
             for (int c = 0; c < 3; ++c)
                 fb.insert(layer.name + "." + names[c],
                           Imf::Slice::Make(Imf::FLOAT, layer.rgb.data() + c, data, 3 * sizeof(float)));
+        // Every other channel on its own.
+        auto in_layer = [&](const std::string &name) {
+            for (const Image::Layer &layer : image.layers)
+                if (name.size() == layer.name.size() + 2 && name.compare(0, layer.name.size() + 1, layer.name + ".") == 0 &&
+                    std::strchr("RGB", name.back()))
+                    return true;
+            return false;
+        };
+        for (auto it = channels.begin(); it != channels.end(); ++it) {
+            const std::string name = it.name();
+            if (name == "R" || name == "G" || name == "B" || (grey && name == "Y") || in_layer(name)) continue;
+            image.channels.push_back({name, std::vector<float>(size_t(image.width) * image.height)});
+        }
+        for (Image::Channel &channel : image.channels)
+            fb.insert(channel.name, Imf::Slice::Make(Imf::FLOAT, channel.values.data(), data, sizeof(float)));
         file.setFrameBuffer(fb);
         file.readPixels(data.min.y, data.max.y);
         if (metadata)

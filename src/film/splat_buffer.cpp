@@ -17,17 +17,23 @@ std::pair<int, int> footprint(float p, float r, int min, int max) {
 
 } // namespace
 
-SplatBuffer::SplatBuffer(Vec2i bounds_min, Vec2i bounds_max, const Filter &filter)
-    : min_(bounds_min), max_(bounds_max), filter_(&filter),
+SplatBuffer::SplatBuffer(Vec2i bounds_min, Vec2i bounds_max, const Filter &filter, int channels)
+    : min_(bounds_min), max_(bounds_max), filter_(&filter), channels_(channels),
       rows_per_band_(std::max(kMinRowsPerBand, (bounds_max.y - bounds_min.y + kBands - 1) / kBands)) {}
 
 void SplatBuffer::allocate_sums() {
     std::call_once(sums_allocated_, [this] {
-        if (sums_.empty()) sums_.assign(size_t(max_.x - min_.x) * (max_.y - min_.y) * 3, 0);
+        if (sums_.empty()) sums_.assign(size_t(max_.x - min_.x) * (max_.y - min_.y) * channels_, 0);
     });
 }
 
 void SplatBuffer::add(Vec2f p, RGB v) {
+    SplatValues values;
+    for (int c = 0; c < 3; ++c) values.add(c, v[c]);
+    add(p, values);
+}
+
+void SplatBuffer::add(Vec2f p, const SplatValues &v) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     const Vec2f r = filter_->radius();
     const auto [x0, x1] = footprint(p.x, r.x, min_.x, max_.x);
@@ -63,22 +69,23 @@ void SplatBuffer::apply(int band, std::vector<Pending> &queue) {
         y1 = std::min(y1, band_y1);
         for (int x = x0; x < x1; ++x) weight_x[x - x0] = filter_->evaluate_x(s.p.x - x - 0.5f);
         for (int y = y0; y < y1; ++y) weight_y[y - y0] = filter_->evaluate_y(s.p.y - y - 0.5f);
-        double units_per_weight[3];
-        for (int c = 0; c < 3; ++c) units_per_weight[c] = double(s.v[c]) / kUnit;
+        double units_per_weight[4];
+        for (int i = 0; i < s.v.count; ++i) units_per_weight[i] = double(s.v.value[i]) / kUnit;
         for (int y = y0; y < y1; ++y) {
             if (weight_y[y - y0] == 0) continue;
-            int64_t *row = &sums_[(size_t(y - min_.y) * width) * 3];
+            int64_t *row = &sums_[(size_t(y - min_.y) * width) * channels_];
             for (int x = x0; x < x1; ++x) {
                 const float w = weight_x[x - x0] * weight_y[y - y0];
                 if (w == 0) continue;
-                int64_t *sum = &row[size_t(x - min_.x) * 3];
-                for (int c = 0; c < 3; ++c) {
-                    double units = std::nearbyint(double(w) * units_per_weight[c]);
+                int64_t *sum = &row[size_t(x - min_.x) * channels_];
+                for (int i = 0; i < s.v.count; ++i) {
+                    double units = std::nearbyint(double(w) * units_per_weight[i]);
                     if (std::abs(units) > kLimit) {
                         overflow = true;
                         units = std::copysign(kLimit, units);
                     }
-                    if (__builtin_add_overflow(sum[c], int64_t(units), &sum[c])) overflow = true;
+                    int64_t &channel_sum = sum[s.v.channel[i]];
+                    if (__builtin_add_overflow(channel_sum, int64_t(units), &channel_sum)) overflow = true;
                 }
             }
         }

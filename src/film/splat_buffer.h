@@ -8,8 +8,12 @@
 // pixel and channel) is far above any pixel value times any realistic sample count; exceeding it
 // is detected (overflowed()).
 //
-// Memory that does not grow with the thread count: one shared full-frame sum (3 x 8 bytes per
-// pixel), and per thread only a queue of pending splats per horizontal band of the image (at
+// Each pixel has a fixed number of channels (3 for RGB, or a spectral film's buckets), and a
+// splat adds up to four values, each to one channel: an RGB value, or a spectral sample's four
+// wavelengths, each to its bucket.
+//
+// Memory that does not grow with the thread count: one shared full-frame sum (8 bytes per
+// pixel and channel), and per thread only a queue of pending splats per horizontal band of the image (at
 // most kBands x kQueueCapacity records). A splat is queued in every band its footprint touches;
 // when a thread's queue for a band is full, the thread locks that band and adds the queued
 // splats, clipped to the band's rows, with plain integer adds. The alternatives cost more: a
@@ -33,22 +37,38 @@
 
 namespace caustica {
 
+// What one splat adds to each pixel it reaches, before the filter weight: up to four values,
+// each to one channel.
+struct SplatValues {
+    std::array<float, 4> value{};
+    std::array<uint16_t, 4> channel{};
+    int count = 0;
+
+    void add(int c, float v) {
+        value[count] = v;
+        channel[count] = uint16_t(c);
+        ++count;
+    }
+};
+
 class SplatBuffer {
   public:
     // bounds: the pixels stored (the film's pixel bounds, not empty); filter: the film's, which
-    // must outlive the buffer.
-    SplatBuffer(Vec2i bounds_min, Vec2i bounds_max, const Filter &filter);
+    // must outlive the buffer; channels: per pixel (at most 65536).
+    SplatBuffer(Vec2i bounds_min, Vec2i bounds_max, const Filter &filter, int channels = 3);
 
-    // Queues v at raster position p (thread-safe).
+    // Queues v at raster position p (thread-safe): an RGB value goes to channels 0, 1 and 2.
     void add(Vec2f p, RGB v);
+    void add(Vec2f p, const SplatValues &v);
     // Adds every thread's queued splats to the sums. Call it while no thread is adding.
     void flush();
 
-    // After flush(): the sums, 3 per pixel in raster order over the bounds, in fixed point, or
-    // empty if nothing was ever splatted.
+    // After flush(): the sums, channels() per pixel in raster order over the bounds, in fixed
+    // point, or empty if nothing was ever splatted.
     const std::vector<int64_t> &sums() const { return sums_; }
+    int channels() const { return channels_; }
     static constexpr double kUnit = 0x1p-28;
-    // Replaces the sums (a checkpoint's; empty or 3 per pixel) and drops what is queued.
+    // Replaces the sums (a checkpoint's; empty or channels() per pixel) and drops what is queued.
     void restore(std::vector<int64_t> sums);
 
     // Whether a sum left the fixed-point range since the flag was last taken; take_overflow()
@@ -60,7 +80,7 @@ class SplatBuffer {
   private:
     struct Pending {
         Vec2f p;
-        RGB v;
+        SplatValues v;
     };
     static constexpr int kBands = 64;
     // A splat that straddles two bands is queued, and its filter weights computed, in each. Bands
@@ -76,6 +96,7 @@ class SplatBuffer {
 
     Vec2i min_, max_;
     const Filter *filter_;
+    int channels_;
     int rows_per_band_;
     std::vector<int64_t> sums_;
     std::once_flag sums_allocated_;

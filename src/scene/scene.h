@@ -76,6 +76,8 @@ class Scene {
     // null without emissive media.
     std::vector<LightPtr> medium_emitters;
     std::unique_ptr<LightSampler> light_and_medium_sampler;
+    // The Camera directive's placement (identity for pbrt-v4's default camera).
+    Transform camera_from_world;
     // The medium around the camera (the outside medium in effect at the Camera directive).
     const Medium *camera_medium = nullptr;
     Shutter shutter;

@@ -374,3 +374,165 @@ TEST(FilmFactory, RejectsBadInput) {
     EXPECT_THROW(make("rgb", {number_param("float", "whitebalance", {40000})}), InputError);
     EXPECT_THROW(make("rgb", {number_param("float", "maxcomponentvalue", {0})}), InputError);
 }
+
+namespace {
+
+std::unique_ptr<Film> make_spectral_film(Vec2i res, int buckets, float lo, float hi,
+                                         std::unique_ptr<Filter> filter = std::make_unique<BoxFilter>()) {
+    auto film = std::make_unique<Film>(res, PixelBounds{{0, 0}, res}, std::move(filter), RGBColorSpace::srgb(),
+                                       PixelSensor(RGBColorSpace::srgb(), 0, 1), Infinity, "out.exr", false);
+    film->set_spectral(SpectralBuckets(buckets, lo, hi));
+    return film;
+}
+
+const std::vector<float> &bucket(const Image &image, int b) { return image.channels.at(b).values; }
+
+} // namespace
+
+TEST(SpectralBuckets, NamesAreThoseOfPbrtV4) {
+    // pbrt-v4's defaults: 16 buckets over [360, 830], named by their centres with a comma.
+    SpectralBuckets b(16, 360, 830);
+    EXPECT_EQ(b.channel_name(0), "S0.374,688nm");
+    EXPECT_EQ(b.channel_name(15), "S0.815,312nm");
+    EXPECT_EQ(b.bucket_of(360), 0);
+    EXPECT_EQ(b.bucket_of(389.3f), 0);
+    EXPECT_EQ(b.bucket_of(389.5f), 1);
+    EXPECT_EQ(b.bucket_of(830), 15);
+}
+
+TEST(SpectralFilm, BucketsHoldTheMeanRadianceTimesTheYIntegralForAnyWavelengthDensity) {
+    // A step spectrum, 1 below 550 nm and 3 above: each bucket holds its mean (the bucket
+    // straddling 550 nm the mix) times CIE_Y_integral, pbrt-v4's scale, whether the wavelengths
+    // come from the visible density or uniformly. Bound: 1% (2048 stratified samples per pixel;
+    // the estimate is within ~0.2% even in the tail buckets). The bucket straddling the step
+    // (520 to 550 to 580 nm: mean 2) differs from its neighbours (1 and 3) by half its value, so a
+    // sample put in the wrong bucket, or a missing division by the density, fails.
+    const float step_lambdas[] = {360, 549.999f, 550, 830}, step_values[] = {1, 1, 3, 3};
+    PiecewiseLinearSpectrum step(step_lambdas, step_values);
+    for (bool visible : {true, false}) {
+        auto film = make_spectral_film({1, 1}, 10, 400, 700);
+        constexpr int N = 2048;
+        for (int i = 0; i < N; ++i) {
+            const float u = (i + 0.5f) / N;
+            const SampledWavelengths lambda =
+                visible ? SampledWavelengths::sample_visible(u) : SampledWavelengths::sample_uniform(u, 400, 700);
+            film->add_sample({0, 0}, step.sample(lambda), lambda, 1);
+        }
+        const Image image = film->get_image(1);
+        ASSERT_EQ(image.channels.size(), 10u);
+        for (int b = 0; b < 10; ++b) {
+            const float lo = 400 + 30 * b, hi = lo + 30;
+            const double mean = hi <= 550 ? 1 : lo >= 550 ? 3 : (1 * (550 - lo) + 3 * (hi - 550)) / 30;
+            EXPECT_NEAR(bucket(image, b)[0], mean * CIE_Y_integral, 0.01 * mean * CIE_Y_integral)
+                << "bucket " << b << (visible ? " (visible density)" : " (uniform)");
+        }
+    }
+}
+
+TEST(SpectralFilm, SplatsFillTheBucketsAsCameraSamplesDo) {
+    // A constant spectrum splatted at pixel centres with a box filter reaches only that pixel:
+    // with splat_scale 1 / n, each bucket holds the spectrum's value times CIE_Y_integral, as
+    // camera samples do.
+    auto film = make_spectral_film({2, 1}, 4, 380, 780);
+    constexpr int N = 1024;
+    for (int i = 0; i < N; ++i) {
+        const SampledWavelengths lambda = SampledWavelengths::sample_uniform((i + 0.5f) / N, 380, 780);
+        film->add_splat({0.5f, 0.5f}, SampledSpectrum(2.f), lambda);
+        film->add_sample({1, 0}, SampledSpectrum(2.f), lambda, 1);
+    }
+    const Image image = film->get_image(1.0 / N);
+    for (int b = 0; b < 4; ++b) {
+        EXPECT_NEAR(bucket(image, b)[0], 2 * CIE_Y_integral, 1e-3 * 2 * CIE_Y_integral) << b;
+        EXPECT_NEAR(bucket(image, b)[1], 2 * CIE_Y_integral, 1e-3 * 2 * CIE_Y_integral) << b;
+    }
+}
+
+TEST(SpectralFilm, AchromaticScenesFillEveryBucketExactly) {
+    // An achromatic scene is traced at one wavelength (Film::set_achromatic): a sample of value
+    // c(lambda) * k there stands for c * k at every wavelength, so each bucket holds k times the
+    // colour's mean over it, with no noise.
+    const float colour_lambdas[] = {360, 830}, colour_values[] = {1, 2};
+    PiecewiseLinearSpectrum colour(colour_lambdas, colour_values);
+    auto film = make_spectral_film({1, 1}, 2, 400, 600);
+    film->set_achromatic(colour, 500);
+    const SampledWavelengths lambda = SampledWavelengths::fixed(500);
+    film->add_sample({0, 0}, SampledSpectrum(colour(500) * 0.5f), lambda, 1);
+    const Image image = film->get_image(1);
+    auto mean = [&](float lo, float hi) { return (colour(lo) + colour(hi)) / 2; };
+    // Integer wavelengths [400, 499] and [500, 600]: means of a linear spectrum at their midpoints.
+    EXPECT_NEAR(bucket(image, 0)[0], 0.5 * mean(400, 499) * CIE_Y_integral, 1e-4 * CIE_Y_integral);
+    EXPECT_NEAR(bucket(image, 1)[0], 0.5 * mean(500, 600) * CIE_Y_integral, 1e-4 * CIE_Y_integral);
+}
+
+TEST(SpectralFilm, CheckpointRestoresBucketsAndTheirSplats) {
+    auto add = [](Film &film, int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            Rng rng(uint64_t(i), 3);
+            const SampledWavelengths lambda = SampledWavelengths::sample_uniform(rng.uniform(), 360, 830);
+            film.add_splat({rng.uniform() * 8, rng.uniform() * 8}, SampledSpectrum(1 + rng.uniform()), lambda);
+            film.add_sample({i % 8, (i / 8) % 8}, SampledSpectrum(rng.uniform()), lambda, 1);
+        }
+    };
+    auto whole = make_spectral_film({8, 8}, 16, 360, 830, std::make_unique<GaussianFilter>());
+    add(*whole, 0, 600);
+    auto first = make_spectral_film({8, 8}, 16, 360, 830, std::make_unique<GaussianFilter>());
+    add(*first, 0, 200);
+    std::stringstream state;
+    first->save_state(state);
+    auto resumed = make_spectral_film({8, 8}, 16, 360, 830, std::make_unique<GaussianFilter>());
+    resumed->restore_state(state);
+    add(*resumed, 200, 600);
+    const Image a = whole->get_image(0.5), b = resumed->get_image(0.5);
+    ASSERT_EQ(a.channels.size(), 16u);
+    for (size_t c = 0; c < a.channels.size(); ++c)
+        EXPECT_EQ(a.channels[c].values, b.channels[c].values) << a.channels[c].name;
+    // A plain RGB film's checkpoint does not fit a spectral film.
+    Film rgb = make_film({8, 8}, std::make_unique<GaussianFilter>());
+    add(rgb, 0, 10);
+    std::stringstream rgb_state;
+    rgb.save_state(rgb_state);
+    auto spectral = make_spectral_film({8, 8}, 16, 360, 830, std::make_unique<GaussianFilter>());
+    EXPECT_THROW(spectral->restore_state(rgb_state), std::runtime_error);
+}
+
+TEST(GBufferFilm, VarianceLayersAreTheSampleVarianceAndItsRatioToTheMean) {
+    // pbrt-v4's G-buffer "Variance" is the sample variance s^2 of a pixel's camera samples (not
+    // of their mean) and "RelativeVariance" s^2 over the mean. Grey samples 1, 2, 3, 6 (in the
+    // output RGB of a white spectrum): mean 3, s^2 = (4 + 1 + 0 + 9) / 3 = 14 / 3.
+    Film film = make_film({1, 1}, std::make_unique<BoxFilter>());
+    film.set_gbuffer(true);
+    film.set_monochromatic(true); // grey values pass through unchanged
+    for (float v : {1.f, 2.f, 3.f, 6.f}) film.add_sample({0, 0}, SampledSpectrum(v), SampledWavelengths::fixed(550), 1);
+    const Image image = film.get_image(1);
+    ASSERT_EQ(image.layers.size(), 2u); // no "variance" layer unless asked for
+    EXPECT_EQ(image.layers[0].name, "Variance");
+    EXPECT_EQ(image.layers[1].name, "RelativeVariance");
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(image.layers[0].rgb[c], 14.f / 3, 1e-5f);
+        EXPECT_NEAR(image.layers[1].rgb[c], 14.f / 9, 1e-5f);
+    }
+}
+
+TEST(FilmFactory, ReadsSpectralAndGBufferParameters) {
+    SourceLocation loc{"scene.pbrt", 4, 1};
+    auto make = [&](const std::string &type, std::vector<ParsedParameter> p) {
+        return create_film(type, dict(std::move(p)), nullptr, std::make_unique<BoxFilter>(), loc);
+    };
+    auto spectral = make("spectral", {number_param("integer", "nbuckets", {5}), number_param("float", "lambdamin", {400}),
+                                      number_param("float", "lambdamax", {700})});
+    ASSERT_NE(spectral->spectral(), nullptr);
+    EXPECT_EQ(spectral->spectral()->count(), 5);
+    EXPECT_FLOAT_EQ(spectral->spectral()->centre(0), 430);
+    EXPECT_FALSE(spectral->gbuffer());
+    auto gbuffer = make("gbuffer", {string_param("coordinatesystem", "world")});
+    EXPECT_TRUE(gbuffer->gbuffer());
+    EXPECT_FALSE(gbuffer->gbuffer_camera_space());
+    EXPECT_TRUE(make("gbuffer", {})->gbuffer_camera_space());
+    EXPECT_EQ(make("rgb", {})->spectral(), nullptr);
+    EXPECT_THROW(make("spectral", {number_param("integer", "nbuckets", {0})}), InputError);
+    EXPECT_THROW(make("spectral", {number_param("float", "lambdamax", {900})}), InputError);
+    EXPECT_THROW(make("spectral", {number_param("float", "lambdamin", {500}), number_param("float", "lambdamax", {500})}),
+                 InputError);
+    EXPECT_THROW(make("spectral", {string_param("filename", "out.png")}), InputError);
+    EXPECT_THROW(make("gbuffer", {string_param("coordinatesystem", "raster")}), InputError);
+}

@@ -79,6 +79,38 @@ TEST_F(ImageIoTest, ExrRoundTripIsBitExact) {
     EXPECT_EQ(files(), std::vector<std::string>{"a.exr"});  // no temporary left behind
 }
 
+TEST_F(ImageIoTest, ExrKeepsLayersAndSingleChannels) {
+    // Layers are written as NAME.R/G/B and single channels under their own names (a spectral
+    // film's "S0.550,000nm", a G-buffer's "P.X"); both read back as written. In half floats the
+    // channels round and clamp as the RGB do.
+    Image img = test_image(4, 3);
+    img.layers.push_back({"Albedo", std::vector<float>(img.rgb.size(), 0.25f)});
+    std::vector<float> values(12);
+    for (size_t i = 0; i < values.size(); ++i) values[i] = float(i) / 3 - 1;
+    values[5] = 1e6f;
+    img.channels.push_back({"S0.550,000nm", values});
+    img.channels.push_back({"P.X", std::vector<float>(12, 2.f)});
+    write_exr(path("c.exr"), img, {});
+    Image back = read_exr(path("c.exr"));
+    ASSERT_EQ(back.layers.size(), 1u);
+    EXPECT_EQ(back.layers[0].name, "Albedo");
+    EXPECT_EQ(back.layers[0].rgb, img.layers[0].rgb);
+    ASSERT_NE(back.channel("S0.550,000nm"), nullptr);
+    EXPECT_EQ(back.channel("S0.550,000nm")->values, values);
+    EXPECT_EQ(back.channel("P.X")->values, std::vector<float>(12, 2.f));
+    EXPECT_EQ(back.channel("R"), nullptr);
+
+    write_exr(path("h.exr"), img, {}, ExrPixelType::Half);
+    Image half = read_exr(path("h.exr"));
+    const std::vector<float> &h = half.channel("S0.550,000nm")->values;
+    for (size_t i = 0; i < values.size(); ++i)
+        EXPECT_EQ(h[i], float(Imath::half(std::min(values[i], 65504.f)))) << i;
+
+    Image wrong = test_image(4, 3);
+    wrong.channels.push_back({"u", std::vector<float>(5)});
+    EXPECT_THROW(write_exr(path("w.exr"), wrong, {}), std::runtime_error);
+}
+
 TEST_F(ImageIoTest, ExrKeepsTheCropWindow) {
     Image img = test_image(5, 4);
     img.origin = {10, 3};

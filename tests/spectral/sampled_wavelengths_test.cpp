@@ -82,6 +82,21 @@ TEST(SampledWavelengths, UniformAndSingleSamplingAreUnbiased) {
     EXPECT_NEAR(single.mean, reference, 4 * single.standard_error);
 }
 
+TEST(SampledWavelengths, UniformSamplingOfARangeStaysInIt) {
+    // A spectral film's range: the hero uniform in it, the others a quarter of the range apart
+    // (wrapped), each with density 1 / (range).
+    for (float u : {0.f, 0.3f, 0.99f}) {
+        const SampledWavelengths s = SampledWavelengths::sample_uniform(u, 400, 700);
+        EXPECT_FLOAT_EQ(s[0], 400 + 300 * u);
+        for (int i = 0; i < NumWavelengths; ++i) {
+            EXPECT_GE(s[i], 400);
+            EXPECT_LE(s[i], 700);
+            EXPECT_FLOAT_EQ(s.pdf()[i], 1.f / 300);
+            EXPECT_NEAR(std::fmod(s[i] - s[0] + 300, 300.f), 75.f * i, 1e-3f);
+        }
+    }
+}
+
 TEST(SampledWavelengths, TerminateKeepsOnlyTheHero) {
     SampledWavelengths w = SampledWavelengths::sample_visible(0.3f);
     EXPECT_FALSE(w.secondary_terminated());
