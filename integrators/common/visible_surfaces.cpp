@@ -7,7 +7,7 @@
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/tile_renderer.h"
 #include "scene/scene.h"
-#include "spectral/cie.h"
+#include "spectral/color_space.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -42,11 +42,7 @@ SampledSpectrum directional_albedo(const BSDF &bsdf, Vec3f wo, Vec3f ns, Sampler
 
 // Output RGB of a reflectance lit by the colour space's white (pbrt-v4's albedo colour).
 RGB albedo_rgb(const SampledSpectrum &albedo, const SampledWavelengths &lambda, const RGBColorSpace &space) {
-    const SampledSpectrum lit = safe_div(albedo * space.illuminant().sample(lambda), lambda.pdf());
-    const XYZ xyz{(cie_x().sample(lambda) * lit).average() / CIE_Y_integral,
-                  (cie_y().sample(lambda) * lit).average() / CIE_Y_integral,
-                  (cie_z().sample(lambda) * lit).average() / CIE_Y_integral};
-    return space.rgb_from_xyz(xyz);
+    return space.rgb_from_xyz(sampled_spectrum_to_xyz(albedo * space.illuminant().sample(lambda), lambda));
 }
 
 // Where the camera ray through film position p_film (with the sample's lens position) meets the

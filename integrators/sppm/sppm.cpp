@@ -531,8 +531,8 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             RGB value = estimate.direct_sum / float(iterations) + estimate.surface.tau / float(surface_measure) +
                         estimate.medium.tau / float(medium_measure);
             std::vector<double> value_buckets(buckets);
+            const double *b = buckets > 0 ? &bucket_estimates_[index * 3 * buckets] : nullptr;
             for (int i = 0; i < buckets; ++i) {
-                const double *b = &bucket_estimates_[(index * 3) * buckets];
                 value_buckets[i] = b[i] / iterations + (r_surface > 0 ? b[buckets + i] / surface_measure : 0) +
                                    (r_medium > 0 ? b[2 * buckets + i] / medium_measure : 0);
             }

@@ -55,7 +55,6 @@ void Film::set_gbuffer(bool camera_space) {
 
 void Film::set_achromatic(const Spectrum &colour, float lambda) {
     achromatic_rgb_ = sensor_.to_sensor_rgb(colour) / colour(lambda);
-    achromatic_lambda_ = lambda;
     if (spectral_) {
         // Each bucket's mean of the colour, at every integer wavelength in it (the resolution of
         // tabulated spectra) or its centre if it holds none.
@@ -191,11 +190,7 @@ Image Film::get_image(double splat_scale, std::map<std::string, std::string> *me
         for (size_t i = 0; i < moments_.size(); ++i) {
             const Moments &m = moments_[i];
             if (m.count < 2) continue;
-            for (int c = 0; c < 3; ++c) {
-                double mean = m.sum[c] / m.count;
-                double sample_variance = std::max(0.0, (m.sum_sq[c] - m.count * mean * mean) / (m.count - 1));
-                variance.rgb[i * 3 + c] = float(sample_variance / m.count);
-            }
+            for (int c = 0; c < 3; ++c) variance.rgb[i * 3 + c] = float(m.sample_variance(c) / m.count);
         }
         image.layers.push_back(std::move(variance));
     }
@@ -216,8 +211,7 @@ void Film::add_sample_variance_layers(Image &image) const {
         const Moments &m = moments_[i];
         if (m.count < 2) continue;
         for (int c = 0; c < 3; ++c) {
-            const double mean = m.sum[c] / m.count;
-            const double s2 = std::max(0.0, (m.sum_sq[c] - m.count * mean * mean) / (m.count - 1));
+            const double s2 = m.sample_variance(c), mean = m.mean(c);
             variance.rgb[i * 3 + c] = float(s2);
             relative.rgb[i * 3 + c] = mean != 0 ? float(s2 / mean) : 0.f;
         }

@@ -41,6 +41,7 @@
 #include "params/parameters.h"
 #include "sampler/sampler.h"
 
+#include <algorithm>
 #include <atomic>
 #include <iosfwd>
 #include <map>
@@ -159,6 +160,12 @@ class Film {
     struct Moments {
         double sum[3] = {0, 0, 0}, sum_sq[3] = {0, 0, 0};
         uint64_t count = 0;
+        // Channel c's sample variance s^2 (count >= 2) and mean.
+        double sample_variance(int c) const {
+            const double m = mean(c);
+            return std::max(0.0, (sum_sq[c] - count * m * m) / (count - 1));
+        }
+        double mean(int c) const { return sum[c] / count; }
     };
 
     Vec2i full_resolution_;
@@ -174,7 +181,6 @@ class Film {
     float diagonal_ = 0.035f;
     bool monochromatic_ = false;
     std::optional<RGB> achromatic_rgb_; // per unit of a sample's average, when achromatic
-    float achromatic_lambda_ = 0;
     // A spectral film's buckets; when achromatic, each bucket's average of the colour over the
     // colour at the traced wavelength.
     std::optional<SpectralBuckets> spectral_;
