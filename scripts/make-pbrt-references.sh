@@ -39,6 +39,7 @@ hard/coated-low-roughness 4096
 textures/noise-textures 256
 textures/bump-and-normal-map 256
 textures/alpha-cutouts 4096
+textures/mip-filtering 1024
 materials/measured 4096
 materials/subsurface 16384
 shapes/curves 4096

@@ -1,6 +1,7 @@
 #include "integrators/bdpt/bdpt.h"
 
 #include "camera/camera.h"
+#include "camera/camera_footprint.h"
 #include "core/error.h"
 #include "integrators/bdpt/mis_weight.h"
 #include "integrators/common/camera_importance.h"
@@ -49,10 +50,10 @@ struct SubpathContext {
 // vertices lie behind (the path tracer's maxdepth rule).
 int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum &beta, float pdf_fwd,
                 TransportMode mode, const Medium *medium, PathVertex *path, int count, int max_count,
-                SampledSpectrum *emitted = nullptr) {
+                SampledSpectrum *emitted = nullptr, const std::optional<RayDifferential> &differential = std::nullopt) {
     const Scene &scene = ctx.scene;
     SubpathWalk walk(scene, mode, ctx.lambda, ctx.sample.sampler, ctx.sample.scratch, ctx.sample.rays, true);
-    walk.start(ray, medium, beta);
+    walk.start(ray, medium, beta, differential);
     // Vertices that count towards max_count: a jump's exit shares its entry's (see after_jump).
     auto counted = [&] { return count - path[count - 1].jumps; };
     while (counted() < max_count) {
@@ -147,7 +148,7 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
     float pdf_pos, pdf_dir;
     ctx.scene.camera->pdf_we(camera_ray.ray, &pdf_pos, &pdf_dir);
     return random_walk(ctx, camera_ray.ray, camera_ray.weight, pdf_dir, TransportMode::Radiance, lens.medium,
-                       path, 1, max_count, emitted);
+                       path, 1, max_count, emitted, camera_ray.differential);
 }
 
 // The light subpath: a light chosen by power, an emitted ray, then scattering vertices.
@@ -317,7 +318,7 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
         CameraSample cs = get_camera_sample(sampler, pixel, film.filter(), scene.motion_shutter());
         SampledSpectrum L(0.f);
-        auto camera_ray = scene.camera->generate_ray(cs, lambda);
+        auto camera_ray = generate_ray_differential(*scene.camera, cs, lambda, differential_scale(sampler.samples_per_pixel()));
         if (camera_ray) {
             SubpathContext ctx{scene, lambda, sample, camera_ray->ray.time};
             // A path of depth d (bounces) has d + 2 vertices: the camera subpath may need all of

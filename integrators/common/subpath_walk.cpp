@@ -1,5 +1,6 @@
 #include "integrators/common/subpath_walk.h"
 
+#include "camera/camera_footprint.h"
 #include "integrators/common/profile_subsurface.h"
 #include "materials/material.h"
 #include "media/medium_interface.h"
@@ -23,8 +24,10 @@ SubpathWalk::SubpathWalk(const Scene &scene, TransportMode mode, SampledWaveleng
     : scene_(scene), mode_(mode), lambda_(lambda), sampler_(sampler), bsdf_memory_(bsdf_memory), rays_(rays),
       reverse_densities_(reverse_densities) {}
 
-void SubpathWalk::start(const Ray &ray, const Medium *medium, const SampledSpectrum &throughput) {
+void SubpathWalk::start(const Ray &ray, const Medium *medium, const SampledSpectrum &throughput,
+                        const std::optional<RayDifferential> &differential) {
     ray_ = ray;
+    differential_ = differential;
     medium_ = medium;
     beta = throughput;
     previous_p_ = ray.o;
@@ -43,10 +46,15 @@ WalkEvent SubpathWalk::advance() {
         beta *= segment.weight;
         if (beta.is_black()) return WalkEvent::Ended;
         if (segment.scattered) {
+            differential_.reset();
             point_ = ScatteringPoint::in_medium_along(ray_, segment.t, medium_);
             return WalkEvent::Vertex;
         }
         if (!hit) return WalkEvent::Escaped;
+        if (si_.material)
+            compute_differentials(si_, differential_ ? &*differential_ : nullptr,
+                                  scene_.camera_footprint ? &*scene_.camera_footprint : nullptr,
+                                  sampler_.samples_per_pixel());
         const BSDF bsdf = si_.material ? shade(si_, lambda_, bsdf_memory_) : BSDF();
         if (bsdf || si_.area_light) {
             point_ = ScatteringPoint::on_surface(si_, bsdf, medium_);
@@ -56,7 +64,14 @@ WalkEvent SubpathWalk::advance() {
     }
 }
 
-void SubpathWalk::pass_through() { leave(si_, ray_.d); }
+void SubpathWalk::pass_through() {
+    // The differential rays cross the surface too (pbrt-v4's SkipIntersection).
+    if (differential_) {
+        differential_->rx_origin += differential_->rx_direction * si_.t;
+        differential_->ry_origin += differential_->ry_direction * si_.t;
+    }
+    leave(si_, ray_.d);
+}
 
 void SubpathWalk::leave(const SurfaceInteraction &from, Vec3f wi) {
     medium_ = medium_after(from, wi, medium_);
@@ -65,6 +80,7 @@ void SubpathWalk::leave(const SurfaceInteraction &from, Vec3f wi) {
 
 std::optional<WalkScatter> SubpathWalk::scatter() {
     WalkScatter s;
+    differential_.reset();
     previous_p_ = point_.p;
     if (point_.in_medium()) {
         // The phase function is sampled exactly (value = density, so beta is unchanged) and is

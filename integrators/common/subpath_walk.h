@@ -78,8 +78,11 @@ class SubpathWalk {
     SubpathWalk(const Scene &scene, TransportMode mode, SampledWavelengths &lambda, Sampler &sampler,
                 ScratchBuffer &bsdf_memory, uint64_t &rays, bool reverse_densities);
 
-    // The path leaves along ray, in medium, carrying beta.
-    void start(const Ray &ray, const Medium *medium, const SampledSpectrum &beta);
+    // The path leaves along ray, in medium, carrying beta. A camera ray's differential gives the
+    // texture footprint at the first surface it reaches (camera/camera_footprint.h); every other
+    // vertex takes the camera's approximate footprint.
+    void start(const Ray &ray, const Medium *medium, const SampledSpectrum &beta,
+               const std::optional<RayDifferential> &differential = std::nullopt);
 
     // Follows the ray to the next vertex: a medium scattering event, or a surface that scatters
     // or emits. Surfaces that do neither are crossed.
@@ -133,6 +136,7 @@ class SubpathWalk {
     bool reverse_densities_;
 
     Ray ray_;
+    std::optional<RayDifferential> differential_;
     const Medium *medium_ = nullptr;
     const Material *absorbing_interior_ = nullptr;
     FreeFlightMIS free_flight_;

@@ -27,10 +27,10 @@ struct EmissionMIS {
 // Radiance along a camera ray: next-event estimation at every non-specular vertex (surface or
 // medium), weighted against the walk's own hits on emitters by the power heuristic. Emissive
 // media are not lights: their emission is what the walk collects (walk.emitted()).
-SampledSpectrum trace_path(const Scene &scene, int max_depth, const Ray &camera_ray, SampledWavelengths &lambda,
+SampledSpectrum trace_path(const Scene &scene, int max_depth, const CameraRay &camera_ray, SampledWavelengths &lambda,
                            Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
     SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, scratch, rays, false);
-    walk.start(camera_ray, scene.camera_medium, SampledSpectrum(1.f));
+    walk.start(camera_ray.ray, scene.camera_medium, SampledSpectrum(1.f), camera_ray.differential);
     SampledSpectrum L(0.f);
     EmissionMIS mis;
     int depth = 0;
@@ -98,7 +98,7 @@ void PathTracer::render(const Scene &scene, const RenderBudget &budget, RenderSt
     render_tiles(scene, budget, stats, progress,
                  [&scene, max_depth](const CameraRay &camera_ray, SampledWavelengths &lambda,
                                      Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
-                     return trace_path(scene, max_depth, camera_ray.ray, lambda, sampler, scratch, rays);
+                     return trace_path(scene, max_depth, camera_ray, lambda, sampler, scratch, rays);
                  });
 }
 

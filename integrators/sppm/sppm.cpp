@@ -1,5 +1,6 @@
 #include "integrators/sppm/sppm.h"
 
+#include "camera/camera_footprint.h"
 #include "core/error.h"
 #include "core/octahedral.h"
 #include "core/sampling.h"
@@ -191,13 +192,12 @@ void find_subsurface_visible_point(const Scene &scene, const SurfaceInteraction 
 // estimate is unbiased though it is taken only that often.) Photons jump through profiles too
 // but are not deposited at exits: the light arriving at an exit through the interior is
 // exactly what the camera's jump gathers at the other end.
-void trace_camera_path(const Scene &scene, int max_depth, const Ray &ray, const SampledSpectrum &weight,
-                       SampledWavelengths &lambda, IterationPixelContext &ctx, SampledSpectrum &L,
-                       PixelState &state) {
+void trace_camera_path(const Scene &scene, int max_depth, const CameraRay &camera_ray, SampledWavelengths &lambda,
+                       IterationPixelContext &ctx, SampledSpectrum &L, PixelState &state) {
     Sampler &sampler = ctx.sampler;
     // The visible points' BSDFs must outlive the camera pass.
     SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, ctx.iteration_scratch, ctx.rays, false);
-    walk.start(ray, scene.camera_medium, weight);
+    walk.start(camera_ray.ray, scene.camera_medium, camera_ray.weight, camera_ray.differential);
     bool specular_bounce = false;
     bool medium_scatter = false; // the last scattering event was in a medium
     float bsdf_pdf = 0;
@@ -387,8 +387,9 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 state.vp = state.subsurface_vp = VisiblePoint{};
                 state.medium_vps.clear();
                 SampledSpectrum L(0.f);
-                if (auto camera_ray = scene.camera->generate_ray(cs, lambda))
-                    trace_camera_path(scene, max_depth_, camera_ray->ray, camera_ray->weight, lambda, ctx, L, state);
+                if (auto camera_ray = generate_ray_differential(*scene.camera, cs, lambda,
+                                                                differential_scale(ctx.sampler.samples_per_pixel())))
+                    trace_camera_path(scene, max_depth_, *camera_ray, lambda, ctx, L, state);
                 if (L.has_non_finite()) {
                     ++ctx.non_finite;
                     L = SampledSpectrum(0.f);

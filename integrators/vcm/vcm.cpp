@@ -1,6 +1,7 @@
 #include "integrators/vcm/vcm.h"
 
 #include "camera/camera.h"
+#include "camera/camera_footprint.h"
 #include "core/error.h"
 #include "integrators/common/camera_importance.h"
 #include "integrators/common/iteration_renderer.h"
@@ -480,7 +481,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     SubpathMis m = SubpathMis::camera_start(it.light_paths, pdf_dir * it.full_frame_pixels);
 
     SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, pixel.sample_scratch, pixel.rays, true);
-    walk.start(camera_ray.ray, scene.camera_medium, camera_ray.weight);
+    walk.start(camera_ray.ray, scene.camera_medium, camera_ray.weight, camera_ray.differential);
     SampledSpectrum L(0.f);
     LightSampleContext previous{camera_ray.ray.o, Vec3f{}, Vec3f{}};
     int path_length = 0;
@@ -666,7 +667,8 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
             cs.time = it.time;
             SampledSpectrum L(0.f);
-            if (auto camera_ray = scene.camera->generate_ray(cs, lambda)) {
+            if (auto camera_ray = generate_ray_differential(*scene.camera, cs, lambda,
+                                                            differential_scale(ctx.sampler.samples_per_pixel()))) {
                 L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_path, surface_photons[g],
                                       medium_photons[g]);
                 if (L.has_non_finite()) {

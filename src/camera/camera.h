@@ -29,6 +29,8 @@ struct Shutter {
 struct CameraRay {
     Ray ray;
     SampledSpectrum weight{1};
+    // Set by generate_ray_differential (camera_footprint.h) for texture filtering.
+    std::optional<RayDifferential> differential;
 };
 
 // For t = 1 connections: importance arriving at ref from a sampled lens point.

@@ -21,6 +21,10 @@ struct SurfaceInteraction {
         Vec3f n;    // shading normal, unit, in the hemisphere of n
         Vec3f dpdu, dpdv;
     } shading;
+    // How the point moves from pixel to pixel on the film (camera/camera_footprint.h), set before
+    // shading; zero when unknown, which makes texture lookups use their finest level.
+    Vec3f dpdx, dpdy;
+    float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
     float t = 0;    // ray parameter of the hit
     float time = 0; // the ray's time (geometry/ray.h), which rays spawned here keep
     int face_index = 0;

@@ -17,6 +17,12 @@ struct Ray {
     Vec3f at(float t) const { return o + d * t; }
 };
 
+// The offset rays of a camera ray (Igehy 1999): through the film position a step to the right (x)
+// and a step down (y) from the ray's (camera/camera_footprint.h).
+struct RayDifferential {
+    Vec3f rx_origin, rx_direction, ry_origin, ry_direction;
+};
+
 // Moves p off the surface along the geometric normal n, to the side of direction w, by more than
 // the rounding error p can carry. That error grows with the magnitude of the coordinates (p is
 // interpolated from vertices, or reprojected and transformed, each a few ulps), so the offset is

@@ -8,8 +8,12 @@ namespace caustica {
 
 namespace {
 
-// pbrt-v4's step in u and v without ray differentials.
-constexpr float BumpStep = 0.0005f;
+// The finite-difference step in u or v: half the footprint's extent in it, as pbrt-v4 takes it,
+// or pbrt-v4's 0.0005 without one.
+float bump_step(float d_dx, float d_dy) {
+    const float step = 0.5f * (std::abs(d_dx) + std::abs(d_dy));
+    return step > 0 ? step : 0.0005f;
+}
 
 bool finite(Vec3f v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -39,20 +43,18 @@ void ShadingPerturbation::apply(SurfaceInteraction &si) const {
         bumped_dpdu = normalize(dpdu - ns * dot(dpdu, ns)) * length(dpdu);
         bumped_dpdv = normalize(cross(ns, bumped_dpdu)) * length(dpdv);
     } else {
-        TextureEvalContext ctx;
-        ctx.p = si.p;
-        ctx.n = n;
-        ctx.uv = si.uv;
+        const TextureEvalContext ctx(si);
         const float d = displacement_->evaluate(ctx);
+        const float du = bump_step(si.dudx, si.dudy), dv = bump_step(si.dvdx, si.dvdy);
         TextureEvalContext shifted = ctx;
-        shifted.p = si.p + BumpStep * dpdu;
-        shifted.uv = si.uv + Vec2f(BumpStep, 0);
+        shifted.p = si.p + du * dpdu;
+        shifted.uv = si.uv + Vec2f(du, 0);
         const float d_u = displacement_->evaluate(shifted);
-        shifted.p = si.p + BumpStep * dpdv;
-        shifted.uv = si.uv + Vec2f(0, BumpStep);
+        shifted.p = si.p + dv * dpdv;
+        shifted.uv = si.uv + Vec2f(0, dv);
         const float d_v = displacement_->evaluate(shifted);
-        bumped_dpdu = dpdu + n * ((d_u - d) / BumpStep);
-        bumped_dpdv = dpdv + n * ((d_v - d) / BumpStep);
+        bumped_dpdu = dpdu + n * ((d_u - d) / du);
+        bumped_dpdv = dpdv + n * ((d_v - d) / dv);
     }
     const Vec3f ns = normalize(cross(bumped_dpdu, bumped_dpdv));
     if (!finite(ns) || !finite(bumped_dpdu) || !finite(bumped_dpdv)) return;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "camera/camera.h"
+#include "camera/camera_footprint.h"
 #include "film/film.h"
 #include "film/filter.h"
 #include "geometry/embree_scene.h"
@@ -78,6 +79,9 @@ class Scene {
     std::unique_ptr<LightSampler> light_and_medium_sampler;
     // The Camera directive's placement (identity for pbrt-v4's default camera).
     Transform camera_from_world;
+    // The camera's approximate texture footprint at any point (camera_footprint.h); none in
+    // scenes assembled without a film, whose texture lookups then use their finest level.
+    std::optional<CameraFootprint> camera_footprint;
     // The medium around the camera (the outside medium in effect at the Camera directive).
     const Medium *camera_medium = nullptr;
     Shutter shutter;

@@ -423,6 +423,7 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
                                   d.camera.loc, camera_motion ? &*camera_motion : nullptr);
     scene->camera_location = d.camera.loc;
     scene->camera_from_world = d.camera.world_from_camera.inverse();
+    scene->camera_footprint.emplace(*scene->camera, scene->camera_from_world, scene->film->extent().full_resolution);
     scene->sampler = d.sampler.type.empty()
                          ? create_default_sampler(int(ov.seed), ov.spp)
                          : create_sampler(d.sampler.type, d.sampler.params, d.sampler.loc, int(ov.seed), ov.spp,

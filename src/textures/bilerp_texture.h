@@ -15,7 +15,7 @@ template <typename Base> class BilerpTexture final : public TextureAdapter<Base,
           v11_(std::move(v11)) {}
 
     TextureValue<Base> value(const TextureEvalContext &ctx, const SampledWavelengths *lambda) const {
-        Vec2f st = mapping_.map(ctx);
+        Vec2f st = mapping_.map(ctx).st;
         float s = st.x, t = st.y;
         return evaluate_texture(*v00_, ctx, lambda) * ((1 - s) * (1 - t)) +
                evaluate_texture(*v10_, ctx, lambda) * (s * (1 - t)) +

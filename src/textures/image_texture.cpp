@@ -6,6 +6,7 @@
 #include "spectral/color.h"
 #include "spectral/color_space.h"
 #include "spectral/rgb_spectrum.h"
+#include "textures/mipmap.h"
 
 #include <cmath>
 #include <map>
@@ -63,7 +64,11 @@ void TexelImage::lookup(Vec2f st, ImageWrap wrap, bool nearest, float *out) cons
         for (int c = 0; c < channels_; ++c) out[c] = texel(xi, yi, c, wrap);
         return;
     }
-    const double xs = x - 0.5, ys = y - 0.5;
+    bilerp({st.x, 1 - st.y}, wrap, out);
+}
+
+void TexelImage::bilerp(Vec2f st, ImageWrap wrap, float *out) const {
+    const double xs = double(st.x) * width_ - 0.5, ys = double(st.y) * height_ - 0.5;
     const int x0 = int(std::floor(xs)), y0 = int(std::floor(ys));
     const float dx = float(xs - x0), dy = float(ys - y0);
     for (int c = 0; c < channels_; ++c)
@@ -71,16 +76,24 @@ void TexelImage::lookup(Vec2f st, ImageWrap wrap, bool nearest, float *out) cons
                  (1 - dx) * dy * texel(x0, y0 + 1, c, wrap) + dx * dy * texel(x0 + 1, y0 + 1, c, wrap);
 }
 
+// The MIP map's filtered value at the lookup's texture coordinates. The image's rows run down
+// while t runs up; the footprint is passed unflipped, as pbrt-v4 passes it (which mirrors an EWA
+// ellipse's orientation; trilinear lookups do not see it).
+void filtered_lookup(const ImageLookup &lookup, const TextureEvalContext &ctx, float *out) {
+    const TexCoord2D c = lookup.mapping.map(ctx);
+    lookup.mipmap->filter({c.st.x, 1 - c.st.y}, {c.dsdx, c.dtdx}, {c.dsdy, c.dtdy}, out);
+}
+
 float FloatImageTexture::evaluate(const TextureEvalContext &ctx) const {
     float v = 0;
-    lookup_.image->lookup(lookup_.mapping.map(ctx), lookup_.wrap, lookup_.nearest, &v);
+    filtered_lookup(lookup_, ctx, &v);
     v *= lookup_.scale;
     return std::max(0.f, lookup_.invert ? 1 - v : v);
 }
 
 SampledSpectrum SpectrumImageTexture::evaluate(const TextureEvalContext &ctx, const SampledWavelengths &lambda) const {
     float v[3];
-    lookup_.image->lookup(lookup_.mapping.map(ctx), lookup_.wrap, lookup_.nearest, v);
+    filtered_lookup(lookup_, ctx, v);
     RGB rgb = RGB{v[0], v[1], v[2]} * lookup_.scale;
     if (lookup_.invert) rgb = RGB{1, 1, 1} - rgb;
     rgb = clamp_zero(rgb);
@@ -187,6 +200,19 @@ std::shared_ptr<const TexelImage> cached_texels(const std::string &path, int cha
     return image;
 }
 
+// Lookups of the same texels with the same wrap mode and filter share one pyramid.
+std::shared_ptr<const MIPMap> cached_mipmap(const std::shared_ptr<const TexelImage> &texels, ImageWrap wrap,
+                                            MIPFilter filter, float max_anisotropy) {
+    static std::mutex mutex;
+    static std::map<std::tuple<const TexelImage *, int, int, float>, std::weak_ptr<const MIPMap>> cache;
+    std::lock_guard lock(mutex);
+    auto key = std::tuple{texels.get(), int(wrap), int(filter), max_anisotropy};
+    if (auto mipmap = cache[key].lock()) return mipmap;
+    auto mipmap = std::make_shared<const MIPMap>(texels, wrap, filter, max_anisotropy);
+    cache[key] = mipmap;
+    return mipmap;
+}
+
 } // namespace
 
 std::shared_ptr<const TexelImage> read_linear_texels(const std::string &path, int channels) {
@@ -204,31 +230,32 @@ ImageLookup read_image_lookup(TextureMapping2D mapping, const ParameterDictionar
     const std::string filter = params.get_one_string("filter", "bilinear");
     const FloatTexels float_texels =
         filter == "point" || filter == "ewa" || filter == "EWA" ? FloatTexels::FirstChannel : FloatTexels::AlphaOrMean;
+    std::shared_ptr<const TexelImage> texels;
     try {
-        lookup.image = cached_texels(path, channels, encoding, float_texels);
+        texels = cached_texels(path, channels, encoding, float_texels);
     } catch (const std::runtime_error &e) {
         throw InputError(params.location("filename"), e.what());
     }
-    const std::string wrap = params.get_one_string("wrap", "repeat");
-    if (wrap == "repeat") lookup.wrap = ImageWrap::Repeat;
-    else if (wrap == "black") lookup.wrap = ImageWrap::Black;
-    else if (wrap == "clamp") lookup.wrap = ImageWrap::Clamp;
-    else if (wrap == "octahedralsphere") lookup.wrap = ImageWrap::OctahedralSphere;
-    else
+    const std::string wrap_name = params.get_one_string("wrap", "repeat");
+    ImageWrap wrap = ImageWrap::Repeat;
+    if (wrap_name == "black") wrap = ImageWrap::Black;
+    else if (wrap_name == "clamp") wrap = ImageWrap::Clamp;
+    else if (wrap_name == "octahedralsphere") wrap = ImageWrap::OctahedralSphere;
+    else if (wrap_name != "repeat")
         throw InputError(params.location("wrap"),
-                         "\"wrap\" must be \"repeat\", \"black\", \"clamp\" or \"octahedralsphere\", not \"" + wrap +
-                             "\"");
-    if (filter == "point") {
-        lookup.nearest = true;
-    } else if (filter == "trilinear" || filter == "ewa" || filter == "EWA") {
-        warning(params.location("filter"), "\"" + filter +
-                                               "\" filtering averages over a pixel's footprint, which needs ray "
-                                               "differentials that Caustica does not track; using \"bilinear\"");
-        params.get_one_float("maxanisotropy", 8); // EWA's, read with it
-    } else if (filter != "bilinear") {
+                         "\"wrap\" must be \"repeat\", \"black\", \"clamp\" or \"octahedralsphere\", not \"" +
+                             wrap_name + "\"");
+    MIPFilter mip_filter = MIPFilter::Bilinear;
+    if (filter == "point") mip_filter = MIPFilter::Point;
+    else if (filter == "trilinear") mip_filter = MIPFilter::Trilinear;
+    else if (filter == "ewa" || filter == "EWA") mip_filter = MIPFilter::EWA;
+    else if (filter != "bilinear")
         throw InputError(params.location("filter"),
                          "\"filter\" must be \"point\", \"bilinear\", \"trilinear\" or \"ewa\", not \"" + filter + "\"");
-    }
+    const float max_anisotropy = params.get_one_float("maxanisotropy", 8);
+    if (!(max_anisotropy >= 1) || !std::isfinite(max_anisotropy))
+        throw InputError(params.location("maxanisotropy"), "\"maxanisotropy\" must be a finite number of at least 1");
+    lookup.mipmap = cached_mipmap(texels, wrap, mip_filter, max_anisotropy);
     lookup.scale = params.get_one_float("scale", 1);
     if (!std::isfinite(lookup.scale)) throw InputError(params.location("scale"), "\"scale\" must be finite");
     lookup.invert = params.get_one_bool("invert", false);

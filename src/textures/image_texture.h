@@ -1,14 +1,13 @@
 // pbrt-v4's "imagemap" textures: an image file looked up at a 2D mapping's texture coordinates.
 //
-// Lookups interpolate bilinearly between the four nearest texels ("bilinear", pbrt's default) or
-// take the nearest one ("point"). pbrt's mip-mapped filters ("trilinear", "ewa") average over the
-// footprint of a pixel, which needs ray differentials that Caustica does not track; they fall
-// back to bilinear lookups with a warning, and antialiasing is left to pixel sampling, as for
-// the procedural textures. As in pbrt-v4, t = 0 is the bottom row of the image, texels are
-// linear (8-bit files are decoded by their "encoding", sRGB unless stated), a value is scaled,
-// then inverted (1 - v) if asked, then clamped at zero; spectrum textures turn the RGB of a
-// lookup into a spectrum of the parameter's kind (albedo, unbounded, illuminant) in the file's
-// colour space (sRGB), and float textures read the first channel.
+// Lookups go through the image's MIP map (mipmap.h) with the "filter" asked for ("point",
+// "bilinear" (the default), "trilinear", "ewa"), over the footprint of a pixel at the point
+// (the texture coordinates' screen-space derivatives, camera/camera_footprint.h). As in pbrt-v4,
+// t = 0 is the bottom row of the image, texels are linear (8-bit files are decoded by their
+// "encoding", sRGB unless stated), a value is scaled, then inverted (1 - v) if asked, then
+// clamped at zero; spectrum textures turn the RGB of a lookup into a spectrum of the parameter's
+// kind (albedo, unbounded, illuminant) in the file's colour space (sRGB), and float textures read
+// the channel read_image_lookup describes.
 #pragma once
 
 #include "core/error.h"
@@ -20,6 +19,7 @@
 
 namespace caustica {
 
+class MIPMap;
 class ParameterDictionary;
 class RGBColorSpace;
 
@@ -30,13 +30,19 @@ enum class ImageWrap { Repeat, Black, Clamp, OctahedralSphere };
 class TexelImage {
   public:
     TexelImage(int width, int height, int channels, std::vector<float> texels);
-    // The interpolated channels at texture coordinates st (written to out[0 .. channels)).
+    // The interpolated channels at texture coordinates st, t = 0 at the bottom row (written to
+    // out[0 .. channels)).
     void lookup(Vec2f st, ImageWrap wrap, bool nearest, float *out) const;
-
-  private:
-    // Texel (x, y)'s channel c, or 0 outside the image with ImageWrap::Black.
+    // The bilinearly interpolated channels at st, t = 0 at the top row (pbrt-v4's Image::Bilerp).
+    void bilerp(Vec2f st, ImageWrap wrap, float *out) const;
+    // Texel (x, y)'s channel c, by the wrap mode outside the image (0 with ImageWrap::Black).
     float texel(int x, int y, int c, ImageWrap wrap) const;
 
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int channels() const { return channels_; }
+
+  private:
     int width_, height_, channels_;
     std::vector<float> texels_;
 };
@@ -44,9 +50,7 @@ class TexelImage {
 // The lookup settings an imagemap texture reads from its parameters.
 struct ImageLookup {
     TextureMapping2D mapping;
-    std::shared_ptr<const TexelImage> image;
-    ImageWrap wrap = ImageWrap::Repeat;
-    bool nearest = false;
+    std::shared_ptr<const MIPMap> mipmap;
     float scale = 1;
     bool invert = false;
 };

@@ -7,8 +7,8 @@
 
 namespace caustica {
 
-RGB MarbleTexture::colour(Vec3f p) const {
-    float marble = p.y + variation_ * fractional_brownian_motion(p, omega_, octaves_);
+RGB MarbleTexture::colour(Vec3f p, Vec3f dpdx, Vec3f dpdy) const {
+    float marble = p.y + variation_ * fractional_brownian_motion(p, omega_, octaves_, dpdx, dpdy);
     float t = 0.5f + 0.5f * std::sin(marble);
     // pbrt-v4's spline: nine control points, six cubic segments of four consecutive points.
     static constexpr RGB Colours[] = {
@@ -30,7 +30,8 @@ RGB MarbleTexture::colour(Vec3f p) const {
 
 SampledSpectrum MarbleTexture::evaluate(const TextureEvalContext &ctx,
                                         const SampledWavelengths &lambda) const {
-    return RGBAlbedoSpectrum(RGBColorSpace::srgb(), colour(scale_ * mapping_.map(ctx))).sample(lambda);
+    return RGBAlbedoSpectrum(RGBColorSpace::srgb(), colour(scale_ * mapping_.map(ctx), scale_ * mapping_.map_vector(ctx.dpdx),
+                                                         scale_ * mapping_.map_vector(ctx.dpdy))).sample(lambda);
 }
 
 bool inside_polka_dot(Vec2f st) {

@@ -20,11 +20,11 @@ namespace caustica {
 // Brownian motion or by turbulence.
 class OctaveNoiseTexture final : public FloatTexture {
   public:
-    using OctaveSum = float (*)(Vec3f p, float omega, int octaves);
+    using OctaveSum = float (*)(Vec3f p, float omega, int octaves, Vec3f dpdx, Vec3f dpdy);
     OctaveNoiseTexture(TextureMapping3D mapping, OctaveSum sum, float omega, int octaves)
         : mapping_(mapping), sum_(sum), omega_(omega), octaves_(octaves) {}
     float evaluate(const TextureEvalContext &ctx) const override {
-        return sum_(mapping_.map(ctx), omega_, octaves_);
+        return sum_(mapping_.map(ctx), omega_, octaves_, mapping_.map_vector(ctx.dpdx), mapping_.map_vector(ctx.dpdy));
     }
 
   private:
@@ -38,9 +38,9 @@ class WindyTexture final : public FloatTexture {
   public:
     explicit WindyTexture(TextureMapping3D mapping) : mapping_(mapping) {}
     float evaluate(const TextureEvalContext &ctx) const override {
-        Vec3f p = mapping_.map(ctx);
-        float wind_strength = fractional_brownian_motion(0.1f * p, 0.5f, 3);
-        float wave_height = fractional_brownian_motion(p, 0.5f, 6);
+        const Vec3f p = mapping_.map(ctx), dpdx = mapping_.map_vector(ctx.dpdx), dpdy = mapping_.map_vector(ctx.dpdy);
+        const float wind_strength = fractional_brownian_motion(0.1f * p, 0.5f, 3, 0.1f * dpdx, 0.1f * dpdy);
+        const float wave_height = fractional_brownian_motion(p, 0.5f, 6, dpdx, dpdy);
         return std::abs(wind_strength) * wave_height;
     }
 
@@ -55,7 +55,7 @@ class MarbleTexture final : public SpectrumTexture {
     SampledSpectrum evaluate(const TextureEvalContext &ctx,
                              const SampledWavelengths &lambda) const override;
     // The albedo (sRGB) at the texture-space point p, before scaling.
-    RGB colour(Vec3f p) const;
+    RGB colour(Vec3f p, Vec3f dpdx, Vec3f dpdy) const;
 
   private:
     TextureMapping3D mapping_;
@@ -78,7 +78,7 @@ class DotsTexture final : public TextureAdapter<Base, DotsTexture<Base>> {
         : mapping_(mapping), in_dots_(std::move(in_dots)), between_dots_(std::move(between_dots)) {}
 
     TextureValue<Base> value(const TextureEvalContext &ctx, const SampledWavelengths *lambda) const {
-        return evaluate_texture(inside_polka_dot(mapping_.map(ctx)) ? *in_dots_ : *between_dots_,
+        return evaluate_texture(inside_polka_dot(mapping_.map(ctx).st) ? *in_dots_ : *between_dots_,
                                 ctx, lambda);
     }
     bool children_wavelength_independent() const {

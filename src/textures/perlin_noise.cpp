@@ -61,26 +61,55 @@ float perlin_noise(float x, float y, float z) {
     return lerp(wz, z0, z1);
 }
 
-float fractional_brownian_motion(Vec3f p, float omega, int octaves) {
+namespace {
+
+// How many octaves the footprint resolves, fractionally: those whose lattice spacing is wider
+// than about twice the footprint (pbrt-v4's FBm).
+float resolved_octaves(Vec3f dpdx, Vec3f dpdy, int octaves) {
+    const float len2 = std::max(length_squared(dpdx), length_squared(dpdy));
+    if (!(len2 > 0)) return float(octaves);
+    return clamp(-1 - std::log2(len2) / 2, 0.f, float(octaves));
+}
+
+float smooth_step(float x, float a, float b) {
+    const float t = clamp((x - a) / (b - a), 0.f, 1.f);
+    return t * t * (3 - 2 * t);
+}
+
+} // namespace
+
+float fractional_brownian_motion(Vec3f p, float omega, int octaves, Vec3f dpdx, Vec3f dpdy) {
+    const float n = resolved_octaves(dpdx, dpdy, octaves);
+    const int whole = int(std::floor(n));
     float sum = 0, frequency = 1, amplitude = 1;
-    for (int i = 0; i < octaves; ++i) {
+    for (int i = 0; i < whole; ++i) {
         sum += amplitude * perlin_noise(frequency * p);
         frequency *= 1.99f;
         amplitude *= omega;
     }
+    const float fade = smooth_step(n - float(whole), 0.3f, 0.7f);
+    if (fade > 0) sum += amplitude * fade * perlin_noise(frequency * p);
     return sum;
 }
 
-float turbulence(Vec3f p, float omega, int octaves) {
+float turbulence(Vec3f p, float omega, int octaves, Vec3f dpdx, Vec3f dpdy) {
+    const float n = resolved_octaves(dpdx, dpdy, octaves);
+    const int whole = int(std::floor(n));
     float sum = 0, frequency = 1, amplitude = 1;
-    for (int i = 0; i < octaves; ++i) {
+    for (int i = 0; i < whole; ++i) {
         sum += amplitude * std::abs(perlin_noise(frequency * p));
         frequency *= 1.99f;
         amplitude *= omega;
     }
-    // pbrt-v4 fades the first octave below the footprint from |noise| to its mean, about 0.2;
-    // with every octave summed that fade sits at the mean.
-    return sum + amplitude * 0.2f;
+    // The partly resolved octave fades from |noise| to its mean, about 0.2; each dropped octave
+    // adds that mean, starting at the partial octave's amplitude as pbrt-v4 counts them.
+    const float fade = smooth_step(n - float(whole), 0.3f, 0.7f);
+    sum += amplitude * (fade > 0 ? lerp(fade, 0.2f, std::abs(perlin_noise(frequency * p))) : 0.2f);
+    for (int i = whole; i < octaves; ++i) {
+        sum += amplitude * 0.2f;
+        amplitude *= omega;
+    }
+    return sum;
 }
 
 } // namespace caustica

@@ -13,13 +13,13 @@ namespace caustica {
 float perlin_noise(float x, float y, float z);
 inline float perlin_noise(Vec3f p) { return perlin_noise(p.x, p.y, p.z); }
 
-// Sums of `octaves` octaves, each of twice (1.99x, to keep lattices from lining up) the
-// frequency and `omega` times the amplitude of the one before. pbrt-v4 drops the octaves finer
-// than the pixel footprint its ray differentials give; Caustica has no ray differentials, so
-// every octave is summed and pixel sampling does the antialiasing.
-float fractional_brownian_motion(Vec3f p, float omega, int octaves);
-// The same sum of |noise|, plus pbrt-v4's allowance of 0.2 of the amplitude for the clamped
-// octave, so the average level matches its antialiased version.
-float turbulence(Vec3f p, float omega, int octaves);
+// Sums of up to `octaves` octaves, each of twice (1.99x, to keep lattices from lining up) the
+// frequency and `omega` times the amplitude of the one before. As in pbrt-v4, the octaves finer
+// than the pixel's footprint (dp/dx, dp/dy in texture space; camera/camera_footprint.h) are
+// dropped, the last one kept fading out smoothly; without a footprint every octave is summed.
+float fractional_brownian_motion(Vec3f p, float omega, int octaves, Vec3f dpdx = {}, Vec3f dpdy = {});
+// The same sum of |noise|, with pbrt-v4's allowance of 0.2 of the amplitude (the mean of
+// |noise|) for each dropped octave and for the one after the last.
+float turbulence(Vec3f p, float omega, int octaves, Vec3f dpdx = {}, Vec3f dpdy = {});
 
 } // namespace caustica

@@ -16,6 +16,9 @@ struct TextureEvalContext {
     Vec3f p;       // render-space point
     Vec3f n;       // shading normal
     Vec2f uv;
+    // Screen-space derivatives of the point (camera/camera_footprint.h), for filtering.
+    Vec3f dpdx, dpdy;
+    float dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
     TextureEvalContext() = default;
     explicit TextureEvalContext(const SurfaceInteraction &si);
 };
