@@ -45,6 +45,7 @@ materials/subsurface 16384
 shapes/curves 4096
 shapes/hair 4096
 shapes/wide-fibres 1024
+shapes/displaced-plymesh 1024
 cameras/spherical-equirect 64
 cameras/spherical-equalarea 64
 cameras/realistic-dof 4096

@@ -1,7 +1,6 @@
 #include "integrators/bdpt/bdpt.h"
 
 #include "camera/camera.h"
-#include "camera/camera_footprint.h"
 #include "core/error.h"
 #include "integrators/bdpt/mis_weight.h"
 #include "integrators/common/camera_importance.h"
@@ -318,7 +317,7 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
         CameraSample cs = get_camera_sample(sampler, pixel, film.filter(), scene.motion_shutter());
         SampledSpectrum L(0.f);
-        auto camera_ray = generate_ray_differential(*scene.camera, cs, lambda, differential_scale(sampler.samples_per_pixel()));
+        auto camera_ray = scene.generate_camera_ray(cs, lambda, sampler.samples_per_pixel());
         if (camera_ray) {
             SubpathContext ctx{scene, lambda, sample, camera_ray->ray.time};
             // A path of depth d (bounces) has d + 2 vertices: the camera subpath may need all of

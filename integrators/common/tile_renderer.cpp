@@ -1,7 +1,6 @@
 #include "integrators/common/tile_renderer.h"
 
 #include "camera/camera.h"
-#include "camera/camera_footprint.h"
 #include "film/film.h"
 #include "scene/scene.h"
 
@@ -162,8 +161,7 @@ void render_tiles(const Scene &scene, const RenderBudget &budget, RenderStats &s
         SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
         CameraSample cs = get_camera_sample(sampler, pixel, film.filter(), scene.motion_shutter());
         SampledSpectrum L;
-        if (auto ray = generate_ray_differential(*scene.camera, cs, lambda,
-                                                differential_scale(sampler.samples_per_pixel()))) {
+        if (auto ray = scene.generate_camera_ray(cs, lambda, sampler.samples_per_pixel())) {
             L = radiance(*ray, lambda, sampler, ctx.scratch, ctx.rays) * ray->weight;
             // A non-finite value is a bug to fix at its source; it is counted (reported in the
             // stats) and never reaches the film.

@@ -1,6 +1,7 @@
 #include "integrators/common/visible_surfaces.h"
 
 #include "camera/camera.h"
+#include "camera/camera_footprint.h"
 #include "core/rng.h"
 #include "core/scratch_buffer.h"
 #include "film/film.h"
@@ -45,27 +46,14 @@ RGB albedo_rgb(const SampledSpectrum &albedo, const SampledWavelengths &lambda, 
     return space.rgb_from_xyz(sampled_spectrum_to_xyz(albedo * space.illuminant().sample(lambda), lambda));
 }
 
-// Where the camera ray through film position p_film (with the sample's lens position) meets the
-// tangent plane at the visible point, minus the point.
-Vec3f offset_on_tangent_plane(const Scene &scene, CameraSample cs, Vec2f offset, const SampledWavelengths &lambda,
-                              Vec3f p, Vec3f n) {
-    cs.p_film = cs.p_film + offset;
-    const std::optional<CameraRay> ray = scene.camera->generate_ray(cs, lambda);
-    if (!ray) return {};
-    const float denominator = dot(n, ray->ray.d);
-    if (denominator == 0) return {};
-    const float t = dot(n, p - ray->ray.o) / denominator;
-    if (!std::isfinite(t)) return {};
-    return ray->ray.o + ray->ray.d * t - p;
-}
-
-// differential: the film offset for dp/dx and dp/dy, in pixels.
-std::optional<VisibleSurface> trace_visible_surface(const Scene &scene, const CameraSample &cs, const CameraRay &camera_ray,
-                                                    float differential, SampledWavelengths &lambda, Sampler &sampler,
+// The first surface with a BSDF that a camera ray (with its differentials) reaches; dp/dx and
+// dp/dy are where the differential rays meet its tangent plane (camera_footprint.h).
+std::optional<VisibleSurface> trace_visible_surface(const Scene &scene, const CameraRay &camera_ray,
+                                                    SampledWavelengths &lambda, Sampler &sampler,
                                                     ScratchBuffer &scratch, SampledSpectrum *albedo) {
     uint64_t rays = 0;
     SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, scratch, rays, false);
-    walk.start(camera_ray.ray, scene.camera_medium, SampledSpectrum(1.f));
+    walk.start(camera_ray.ray, scene.camera_medium, SampledSpectrum(1.f), camera_ray.differential);
     while (true) {
         if (walk.advance() != WalkEvent::Vertex || walk.in_medium()) return {};
         const ScatteringPoint &point = walk.vertex();
@@ -79,8 +67,8 @@ std::optional<VisibleSurface> trace_visible_surface(const Scene &scene, const Ca
         v.n = face_forward(si.n, si.wo);
         v.ns = face_forward(si.shading.n, si.wo);
         v.uv = si.uv;
-        v.dpdx = offset_on_tangent_plane(scene, cs, {differential, 0}, lambda, si.p, si.n);
-        v.dpdy = offset_on_tangent_plane(scene, cs, {0, differential}, lambda, si.p, si.n);
+        v.dpdx = si.dpdx;
+        v.dpdy = si.dpdy;
         *albedo = directional_albedo(point.bsdf, si.wo, si.shading.n, sampler);
         return v;
     }
@@ -101,9 +89,9 @@ void add(double *sum, Vec3f v, float w) {
 
 void add_visible_surface_layers(const Scene &scene, int samples, int render_samples, Image &image) {
     const Film &film = *scene.film;
-    // pbrt-v4 scales camera ray differentials to the spacing of the pixel's samples,
-    // max(1/8, 1/sqrt(spp)) of a pixel, and its dz layers with them.
-    const float differential = std::max(0.125f, 1 / std::sqrt(float(std::max(render_samples, 1))));
+    // pbrt-v4 scales camera ray differentials to the spacing of the render's samples, and its dz
+    // layers with them.
+    const float differential = differential_scale(render_samples);
     const PixelBounds &bounds = film.pixel_bounds();
     const Transform output_from_world = film.gbuffer_camera_space() ? scene.camera_from_world : Transform();
     const size_t pixels = size_t(bounds.width()) * bounds.height();
@@ -126,11 +114,11 @@ void add_visible_surface_layers(const Scene &scene, int samples, int render_samp
                 SampledWavelengths lambda = SampledWavelengths::sample_visible(sampler.get_1d());
                 const CameraSample cs = get_camera_sample(sampler, {x, y}, film.filter(), scene.motion_shutter());
                 s.weight += cs.filter_weight;
-                const std::optional<CameraRay> ray = scene.camera->generate_ray(cs, lambda);
+                const std::optional<CameraRay> ray = generate_ray_differential(*scene.camera, cs, lambda, differential);
                 if (!ray) continue;
                 SampledSpectrum albedo(0.f);
                 const std::optional<VisibleSurface> v =
-                    trace_visible_surface(scene, cs, *ray, differential, lambda, sampler, *state.scratch, &albedo);
+                    trace_visible_surface(scene, *ray, lambda, sampler, *state.scratch, &albedo);
                 state.scratch->reset();
                 if (!v) continue;
                 const float w = cs.filter_weight;

@@ -1,6 +1,5 @@
 #include "integrators/sppm/sppm.h"
 
-#include "camera/camera_footprint.h"
 #include "core/error.h"
 #include "core/octahedral.h"
 #include "core/sampling.h"
@@ -387,8 +386,7 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 state.vp = state.subsurface_vp = VisiblePoint{};
                 state.medium_vps.clear();
                 SampledSpectrum L(0.f);
-                if (auto camera_ray = generate_ray_differential(*scene.camera, cs, lambda,
-                                                                differential_scale(ctx.sampler.samples_per_pixel())))
+                if (auto camera_ray = scene.generate_camera_ray(cs, lambda, ctx.sampler.samples_per_pixel()))
                     trace_camera_path(scene, max_depth_, *camera_ray, lambda, ctx, L, state);
                 if (L.has_non_finite()) {
                     ++ctx.non_finite;

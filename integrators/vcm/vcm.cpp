@@ -1,7 +1,6 @@
 #include "integrators/vcm/vcm.h"
 
 #include "camera/camera.h"
-#include "camera/camera_footprint.h"
 #include "core/error.h"
 #include "integrators/common/camera_importance.h"
 #include "integrators/common/iteration_renderer.h"
@@ -667,8 +666,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             CameraSample cs = get_camera_sample(ctx.sampler, pixel, film.filter());
             cs.time = it.time;
             SampledSpectrum L(0.f);
-            if (auto camera_ray = generate_ray_differential(*scene.camera, cs, lambda,
-                                                            differential_scale(ctx.sampler.samples_per_pixel()))) {
+            if (auto camera_ray = scene.generate_camera_ray(cs, lambda, ctx.sampler.samples_per_pixel())) {
                 L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_path, surface_photons[g],
                                       medium_photons[g]);
                 if (L.has_non_finite()) {

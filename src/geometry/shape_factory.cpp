@@ -4,6 +4,7 @@
 #include "geometry/cylinder.h"
 #include "geometry/disk.h"
 #include "geometry/loop_subdivision.h"
+#include "geometry/mesh_displacement.h"
 #include "geometry/mesh_file.h"
 #include "geometry/sphere.h"
 
@@ -83,14 +84,15 @@ std::shared_ptr<ShapeGroup> create_triangle_mesh(const Transform &render_from_ob
 std::shared_ptr<ShapeGroup> create_ply_mesh(const Transform &render_from_object,
                                             bool reverse_orientation,
                                             const ParameterDictionary &params,
-                                            const SourceLocation &loc) {
+                                            const SourceLocation &loc, const FloatTexture *displacement) {
     std::string filename = params.get_one_string("filename", "");
     if (filename.empty()) throw InputError(loc, "plymesh: no \"filename\" given");
     std::string path = params.file_path("filename", filename);
-    if (params.has("displacement"))
-        warning(params.location("displacement"),
-                "plymesh: displacement mapping is not supported; rendering the mesh undisplaced");
+    const float edge_length = params.get_one_float("edgelength", 1);
     MeshData data = read_mesh_file(path, params.location("filename"));
+    if (displacement)
+        data = displace_mesh(std::move(data), *displacement, edge_length, render_from_object,
+                             params.location("displacement"), params.location("edgelength"));
     return mesh_group("plymesh", std::move(data), render_from_object, reverse_orientation,
                       params.location("filename"), "plymesh \"" + filename + "\"");
 }
@@ -194,11 +196,11 @@ std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
                                          const Transform &render_from_object,
                                          bool reverse_orientation,
                                          const ParameterDictionary &params,
-                                         const SourceLocation &loc) {
+                                         const SourceLocation &loc, const FloatTexture *displacement) {
     if (type == "trianglemesh")
         return create_triangle_mesh(render_from_object, reverse_orientation, params, loc);
     if (type == "plymesh")
-        return create_ply_mesh(render_from_object, reverse_orientation, params, loc);
+        return create_ply_mesh(render_from_object, reverse_orientation, params, loc, displacement);
     if (type == "bilinearmesh")
         return create_bilinear_mesh(render_from_object, reverse_orientation, params, loc);
     if (type == "sphere") return create_sphere(render_from_object, reverse_orientation, params, loc);

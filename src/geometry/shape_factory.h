@@ -10,15 +10,19 @@
 
 namespace caustica {
 
+class FloatTexture;
+
 // "trianglemesh", "plymesh" (file relative to the scene's directory; .ply.gz accepted),
 // "bilinearmesh" (as triangles), "loopsubdiv", "sphere", "disk", "cylinder" and "curve".
 // pbrt-v3's quadrics, which pbrt-v4 dropped, give a warning naming them and nullptr; unknown
 // names are an InputError. Parameters are read from params, whose unread ones the
-// caller reports.
+// caller reports. `displacement` is a plymesh's "displacement" texture, which the caller finds
+// among the named textures (mesh_displacement.h); null for other shapes or none.
 std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
                                          const Transform &render_from_object,
                                          bool reverse_orientation,
                                          const ParameterDictionary &params,
-                                         const SourceLocation &loc);
+                                         const SourceLocation &loc,
+                                         const FloatTexture *displacement = nullptr);
 
 } // namespace caustica

@@ -80,7 +80,8 @@ class Scene {
     // The Camera directive's placement (identity for pbrt-v4's default camera).
     Transform camera_from_world;
     // The camera's approximate texture footprint at any point (camera_footprint.h); none in
-    // scenes assembled without a film, whose texture lookups then use their finest level.
+    // scenes without textures (nothing reads it) or assembled without a film, whose texture
+    // lookups then use their finest level.
     std::optional<CameraFootprint> camera_footprint;
     // The medium around the camera (the outside medium in effect at the Camera directive).
     const Medium *camera_medium = nullptr;
@@ -108,6 +109,13 @@ class Scene {
 
     bool intersect(const Ray &ray, SurfaceInteraction *si) const { return geometry.intersect(ray, si); }
     bool occluded(const Ray &ray) const { return geometry.occluded(ray); }
+    // The camera ray for a sample, with its differentials when textures read the footprint; spp
+    // is the sampler's samples per pixel, which sets their step (differential_scale).
+    std::optional<CameraRay> generate_camera_ray(const CameraSample &cs, const SampledWavelengths &lambda,
+                                                 int spp) const {
+        if (!camera_footprint) return camera->generate_ray(cs, lambda);
+        return generate_ray_differential(*camera, cs, lambda, differential_scale(spp));
+    }
 
     // Keeps what the lights and primitives point to alive for the scene's lifetime.
     std::vector<MaterialPtr> materials;

@@ -223,6 +223,11 @@ const Material *material_for(const ShapeEntity &s, const MaterialTable &table) {
 
 // The shape's "alpha" (a float or a float texture), or null when it is opaque. Parameters that
 // no part of the renderer read are then reported, as for the other directives.
+// A plymesh's "displacement" texture (mesh_displacement.h), or null.
+FloatTexturePtr displacement_for(const ShapeEntity &s, const NamedTextures &textures) {
+    return s.type == "plymesh" ? s.params.get_float_texture_or_null("displacement", textures) : nullptr;
+}
+
 std::shared_ptr<const AlphaMask> alpha_for(const ShapeEntity &s, const NamedTextures &textures) {
     auto alpha = make_alpha_mask(s.params.get_float_texture_or_null("alpha", textures));
     s.params.report_unused();
@@ -234,7 +239,7 @@ void add_shapes(const SceneDescription &d, const NamedTextures &textures, const 
     for (const ShapeEntity &s : d.shapes) {
         // A moving shape is built in its own space and placed by Embree at each ray's time.
         auto group = create_shape(s.type, s.render_from_object_end ? Transform() : s.render_from_object,
-                                  s.reverse_orientation, s.params, s.loc);
+                                  s.reverse_orientation, s.params, s.loc, displacement_for(s, textures).get());
         if (!group) continue;
         PrimitiveAttributes attrs;
         attrs.alpha = alpha_for(s, textures);
@@ -269,7 +274,8 @@ void add_instances(const SceneDescription &d, const NamedTextures &textures,
     for (const InstanceDefinition &def : d.instances) {
         std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> members;
         for (const ShapeEntity &s : def.shapes) {
-            auto group = create_shape(s.type, s.render_from_object, s.reverse_orientation, s.params, s.loc);
+            auto group = create_shape(s.type, s.render_from_object, s.reverse_orientation, s.params, s.loc,
+                                      displacement_for(s, textures).get());
             if (!group) continue;
             if (s.area_light_index >= 0)
                 warning(s.loc, "area lights inside object instances are not supported; the shape "
@@ -423,7 +429,8 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
                                   d.camera.loc, camera_motion ? &*camera_motion : nullptr);
     scene->camera_location = d.camera.loc;
     scene->camera_from_world = d.camera.world_from_camera.inverse();
-    scene->camera_footprint.emplace(*scene->camera, scene->camera_from_world, scene->film->extent().full_resolution);
+    if (!d.textures.empty())
+        scene->camera_footprint.emplace(*scene->camera, scene->camera_from_world, scene->film->extent().full_resolution);
     scene->sampler = d.sampler.type.empty()
                          ? create_default_sampler(int(ov.seed), ov.spp)
                          : create_sampler(d.sampler.type, d.sampler.params, d.sampler.loc, int(ov.seed), ov.spp,
