@@ -51,7 +51,8 @@ WalkEvent SubpathWalk::advance() {
             return WalkEvent::Vertex;
         }
         if (!hit) return WalkEvent::Escaped;
-        if (si_.material)
+        // Scenes without textures have neither a footprint nor differentials: nothing reads them.
+        if (si_.material && (differential_ || scene_.camera_footprint))
             compute_differentials(si_, differential_ ? &*differential_ : nullptr,
                                   scene_.camera_footprint ? &*scene_.camera_footprint : nullptr,
                                   sampler_.samples_per_pixel());

@@ -92,7 +92,7 @@ std::optional<CameraRay> generate_ray_differential(const Camera &camera, const C
 }
 
 CameraFootprint::CameraFootprint(const Camera &camera, const Transform &camera_from_world, Vec2i full_resolution)
-    : camera_from_world_(camera_from_world) {
+    : camera_from_world_(camera_from_world), world_from_camera_(camera_from_world.inverse()) {
     const Vec3f unbounded{Infinity, Infinity, Infinity};
     min_pos_x_ = min_pos_y_ = min_dir_x_ = min_dir_y_ = unbounded;
     const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.5f);
@@ -140,9 +140,8 @@ void CameraFootprint::approximate_dp_dxy(Vec3f p, Vec3f n, int spp, Vec3f *dpdx,
     const std::optional<Vec3f> py = plane_hit(min_pos_y_, Vec3f{0, 0, 1} + min_dir_y_, p_down, n_down);
     if (!px || !py) return;
     const float scale = differential_scale(spp);
-    const Transform world_from_camera = camera_from_world_.inverse();
-    *dpdx = world_from_camera.apply_vector(down_z.apply_inverse(*px - p_down)) * scale;
-    *dpdy = world_from_camera.apply_vector(down_z.apply_inverse(*py - p_down)) * scale;
+    *dpdx = world_from_camera_.apply_vector(down_z.apply_inverse(*px - p_down)) * scale;
+    *dpdy = world_from_camera_.apply_vector(down_z.apply_inverse(*py - p_down)) * scale;
 }
 
 void compute_differentials(SurfaceInteraction &si, const RayDifferential *ray, const CameraFootprint *footprint,

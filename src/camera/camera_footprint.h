@@ -47,7 +47,7 @@ class CameraFootprint {
     void approximate_dp_dxy(Vec3f p, Vec3f n, int spp, Vec3f *dpdx, Vec3f *dpdy) const;
 
   private:
-    Transform camera_from_world_;
+    Transform camera_from_world_, world_from_camera_;
     Vec3f min_pos_x_, min_pos_y_, min_dir_x_, min_dir_y_;
 };
 

@@ -200,15 +200,20 @@ std::shared_ptr<const TexelImage> cached_texels(const std::string &path, int cha
     return image;
 }
 
-// Lookups of the same texels with the same wrap mode and filter share one pyramid.
-std::shared_ptr<const MIPMap> cached_mipmap(const std::shared_ptr<const TexelImage> &texels, ImageWrap wrap,
-                                            MIPFilter filter, float max_anisotropy) {
+// Lookups that read the same file the same way, with the same wrap mode and filter, share one
+// pyramid (scenes often use one image for several materials).
+std::shared_ptr<const MIPMap> cached_mipmap(const std::string &path, int channels, Encoding encoding,
+                                            FloatTexels float_texels, ImageWrap wrap, MIPFilter filter,
+                                            float max_anisotropy) {
     static std::mutex mutex;
-    static std::map<std::tuple<const TexelImage *, int, int, float>, std::weak_ptr<const MIPMap>> cache;
+    static std::map<std::tuple<std::string, int, int, float, int, int, int, float>, std::weak_ptr<const MIPMap>>
+        cache;
     std::lock_guard lock(mutex);
-    auto key = std::tuple{texels.get(), int(wrap), int(filter), max_anisotropy};
+    auto key = std::tuple{path,          channels,  int(encoding.kind), encoding.gamma, int(float_texels),
+                          int(wrap), int(filter), max_anisotropy};
     if (auto mipmap = cache[key].lock()) return mipmap;
-    auto mipmap = std::make_shared<const MIPMap>(texels, wrap, filter, max_anisotropy);
+    auto mipmap = std::make_shared<const MIPMap>(cached_texels(path, channels, encoding, float_texels), wrap, filter,
+                                                 max_anisotropy);
     cache[key] = mipmap;
     return mipmap;
 }
@@ -230,12 +235,6 @@ ImageLookup read_image_lookup(TextureMapping2D mapping, const ParameterDictionar
     const std::string filter = params.get_one_string("filter", "bilinear");
     const FloatTexels float_texels =
         filter == "point" || filter == "ewa" || filter == "EWA" ? FloatTexels::FirstChannel : FloatTexels::AlphaOrMean;
-    std::shared_ptr<const TexelImage> texels;
-    try {
-        texels = cached_texels(path, channels, encoding, float_texels);
-    } catch (const std::runtime_error &e) {
-        throw InputError(params.location("filename"), e.what());
-    }
     const std::string wrap_name = params.get_one_string("wrap", "repeat");
     ImageWrap wrap = ImageWrap::Repeat;
     if (wrap_name == "black") wrap = ImageWrap::Black;
@@ -255,7 +254,11 @@ ImageLookup read_image_lookup(TextureMapping2D mapping, const ParameterDictionar
     const float max_anisotropy = params.get_one_float("maxanisotropy", 8);
     if (!(max_anisotropy >= 1) || !std::isfinite(max_anisotropy))
         throw InputError(params.location("maxanisotropy"), "\"maxanisotropy\" must be a finite number of at least 1");
-    lookup.mipmap = cached_mipmap(texels, wrap, mip_filter, max_anisotropy);
+    try {
+        lookup.mipmap = cached_mipmap(path, channels, encoding, float_texels, wrap, mip_filter, max_anisotropy);
+    } catch (const std::runtime_error &e) {
+        throw InputError(params.location("filename"), e.what());
+    }
     lookup.scale = params.get_one_float("scale", 1);
     if (!std::isfinite(lookup.scale)) throw InputError(params.location("scale"), "\"scale\" must be finite");
     lookup.invert = params.get_one_bool("invert", false);

@@ -41,6 +41,8 @@ class TexelImage {
     int width() const { return width_; }
     int height() const { return height_; }
     int channels() const { return channels_; }
+    // The texels, interleaved, rows from the top.
+    const float *data() const { return texels_.data(); }
 
   private:
     int width_, height_, channels_;

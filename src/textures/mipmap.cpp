@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include <tbb/parallel_for.h>
+
 namespace caustica {
 
 namespace {
@@ -45,48 +47,59 @@ std::vector<ResampleWeight> resample_weights(int old_res, int new_res) {
     return weights;
 }
 
+// Channel c of texel (x, y): read directly inside the image, by the wrap mode outside it.
+float texel_or_wrapped(const TexelImage &image, const float *texels, int x, int y, int c, ImageWrap wrap) {
+    if (x >= 0 && x < image.width() && y >= 0 && y < image.height())
+        return texels[(size_t(y) * image.width() + x) * image.channels() + c];
+    return image.texel(x, y, c, wrap);
+}
+
 // The image resampled up to (width, height), reading past its edges by the wrap mode: rows
-// first, then columns, clamped at zero (the sinc's lobes can go negative).
+// first, then columns, clamped at zero (the sinc's lobes can go negative). Rows in parallel.
 std::shared_ptr<const TexelImage> resize_up(const TexelImage &image, int width, int height, ImageWrap wrap) {
     const int nc = image.channels();
+    const float *source = image.data();
     const std::vector<ResampleWeight> wx = resample_weights(image.width(), width);
     const std::vector<ResampleWeight> wy = resample_weights(image.height(), height);
     // Rows resampled in x, for every source row a column filter can reach (y0 .. y1).
     const int y0 = wy.front().first, y1 = wy.back().first + 4;
     std::vector<float> rows(size_t(y1 - y0) * width * nc);
-    for (int y = y0; y < y1; ++y)
+    tbb::parallel_for(y0, y1, [&](int y) {
         for (int x = 0; x < width; ++x)
             for (int c = 0; c < nc; ++c) {
                 float v = 0;
-                for (int j = 0; j < 4; ++j) v += wx[x].w[j] * image.texel(wx[x].first + j, y, c, wrap);
+                for (int j = 0; j < 4; ++j) v += wx[x].w[j] * texel_or_wrapped(image, source, wx[x].first + j, y, c, wrap);
                 rows[(size_t(y - y0) * width + x) * nc + c] = v;
             }
+    });
     std::vector<float> texels(size_t(width) * height * nc);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            for (int c = 0; c < nc; ++c) {
-                float v = 0;
-                for (int j = 0; j < 4; ++j) v += wy[y].w[j] * rows[(size_t(wy[y].first + j - y0) * width + x) * nc + c];
-                texels[(size_t(y) * width + x) * nc + c] = std::max(0.f, v);
-            }
+    tbb::parallel_for(0, height, [&](int y) {
+        const float *r = &rows[size_t(wy[y].first - y0) * width * nc];
+        const size_t stride = size_t(width) * nc;
+        for (size_t i = 0; i < stride; ++i) {
+            const float v = wy[y].w[0] * r[i] + wy[y].w[1] * r[i + stride] + wy[y].w[2] * r[i + 2 * stride] +
+                            wy[y].w[3] * r[i + 3 * stride];
+            texels[size_t(y) * stride + i] = std::max(0.f, v);
+        }
+    });
     return std::make_shared<TexelImage>(width, height, nc, std::move(texels));
 }
 
 // The next level: each texel the mean of the 2x2 below it (a side of 1 stays 1).
 std::shared_ptr<const TexelImage> downsample(const TexelImage &image) {
-    const int nc = image.channels();
-    const int width = std::max(1, image.width() / 2), height = std::max(1, image.height() / 2);
-    const int dx = image.width() > 1 ? 1 : 0, dy = image.height() > 1 ? 1 : 0;
+    const int nc = image.channels(), w = image.width();
+    const float *source = image.data();
+    const int width = std::max(1, w / 2), height = std::max(1, image.height() / 2);
+    const int dx = w > 1 ? 1 : 0, dy = image.height() > 1 ? 1 : 0;
     std::vector<float> texels(size_t(width) * height * nc);
-    for (int y = 0; y < height; ++y)
+    tbb::parallel_for(0, height, [&](int y) {
+        const float *row0 = source + size_t(2 * y) * w * nc, *row1 = source + size_t(2 * y + dy) * w * nc;
         for (int x = 0; x < width; ++x)
             for (int c = 0; c < nc; ++c) {
-                const int sx = 2 * x, sy = 2 * y;
-                const ImageWrap w = ImageWrap::Clamp; // never reached: the 2x2 lies inside
-                texels[(size_t(y) * width + x) * nc + c] =
-                    (image.texel(sx, sy, c, w) + image.texel(sx + dx, sy, c, w) + image.texel(sx, sy + dy, c, w) +
-                     image.texel(sx + dx, sy + dy, c, w)) / 4;
+                const size_t a = size_t(2 * x) * nc + c, b = size_t(2 * x + dx) * nc + c;
+                texels[(size_t(y) * width + x) * nc + c] = (row0[a] + row0[b] + row1[a] + row1[b]) / 4;
             }
+    });
     return std::make_shared<TexelImage>(width, height, nc, std::move(texels));
 }
 
