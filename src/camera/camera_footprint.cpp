@@ -111,13 +111,13 @@ CameraFootprint::CameraFootprint(const Camera &camera, const Transform &camera_f
         const Vec3f doy = camera_from_world.apply_vector(rd->ry_origin - cr->ray.o);
         if (length(dox) < length(min_pos_x_)) min_pos_x_ = dox;
         if (length(doy) < length(min_pos_y_)) min_pos_y_ = doy;
-        // The direction differentials in the frame that turns the ray onto +z, the frame
-        // approximate_dp_dxy applies them in.
-        const Vec3f d = normalize(camera_from_world.apply_vector(cr->ray.d));
-        const Rotation down_z(d, {0, 0, 1});
+        // The direction differentials in pbrt-v4's frame around the ray: Frame::from_z of its
+        // direction along the world's axes (pbrt-v4's default render space, "cameraworld", has
+        // them), which approximate_dp_dxy then applies in the camera frame turned onto the point.
+        const Frame f = Frame::from_z(normalize(cr->ray.d));
         const Vec3f z{0, 0, 1};
-        const Vec3f dx = normalize(down_z.apply(normalize(camera_from_world.apply_vector(rd->rx_direction)))) - z;
-        const Vec3f dy = normalize(down_z.apply(normalize(camera_from_world.apply_vector(rd->ry_direction)))) - z;
+        const Vec3f dx = normalize(f.to_local(normalize(rd->rx_direction))) - z;
+        const Vec3f dy = normalize(f.to_local(normalize(rd->ry_direction))) - z;
         if (length(dx) < length(min_dir_x_)) min_dir_x_ = dx;
         if (length(dy) < length(min_dir_y_)) min_dir_y_ = dy;
     }

@@ -13,9 +13,7 @@
 //     footprint the camera's smallest differentials would have at that point and orientation.
 // Differs from pbrt-v4 in one respect: pbrt-v4 also carries differentials through perfectly
 // specular reflections and refractions, which needs the derivatives of the shading normal; here
-// the vertex after such a bounce uses the approximation. And the smallest direction differentials
-// are measured in the turned camera frame they are applied in, where pbrt-v4 measures them in an
-// arbitrary frame around each ray.
+// the vertex after such a bounce uses the approximation.
 #pragma once
 
 #include "camera/camera.h"
