@@ -141,9 +141,10 @@ void MIPMap::filter(Vec2f st, Vec2f dst0, Vec2f dst1, float *out) const {
         return;
     }
     if (!std::isfinite(dst0.x + dst0.y + dst1.x + dst1.y)) dst0 = dst1 = Vec2f{0, 0};
-    // Far outside the image float texture coordinates have no texel precision left; bounded, they
-    // keep texel indices within int.
-    st = {std::clamp(st.x, -1e6f, 1e6f), std::clamp(st.y, -1e6f, 1e6f)};
+    // Texel indices must stay within int: a repeating image is looked up the same a whole number
+    // of repeats away (st - floor(st) is exact), any other is constant that far outside.
+    if (wrap_ == ImageWrap::Repeat) st = {st.x - std::floor(st.x), st.y - std::floor(st.y)};
+    else st = {std::clamp(st.x, -1e4f, 1e4f), std::clamp(st.y, -1e4f, 1e4f)};
     if (filter_ != MIPFilter::EWA) {
         // The level whose texels are as wide as the footprint's widest extent.
         const float width = 2 * std::max({std::abs(dst0.x), std::abs(dst0.y), std::abs(dst1.x), std::abs(dst1.y)});

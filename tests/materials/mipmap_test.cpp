@@ -96,6 +96,16 @@ TEST(MIPMap, EwaKeepsAConstant) {
     EXPECT_NEAR(lookup(ewa, {0.1f, 0.9f}, {NAN, 0}, {0, 0}), 0.3f, 1e-6f); // a broken footprint: none
 }
 
+// A repeating image is looked up the same any whole number of repeats away, however far.
+TEST(MIPMap, RepeatsFarAway) {
+    const MIPMap ewa(image(16, 16, [](int x, int y) { return float(x * 16 + y); }), ImageWrap::Repeat, MIPFilter::EWA, 8);
+    const Vec2f st{0.37f, 0.61f}, d0{0.02f, 0.01f}, d1{-0.004f, 0.01f};
+    EXPECT_FLOAT_EQ(lookup(ewa, {st.x + 3, st.y - 7}, d0, d1), lookup(ewa, st, d0, d1));
+    EXPECT_TRUE(std::isfinite(lookup(ewa, {3e9f, -5e8f}, d0, d1)));
+    const MIPMap clamped(image(16, 16, [](int x, int) { return float(x); }), ImageWrap::Clamp, MIPFilter::Trilinear, 8);
+    EXPECT_FLOAT_EQ(lookup(clamped, {4e9f, 0.5f}), 15.f);
+}
+
 // pbrt-v4's filtered checkerboard: the sharp pattern without a footprint, the even mix at a
 // cell edge, and the mean when the footprint spans many cells.
 TEST(CheckerboardFilter, BlendsByTheFootprint) {
