@@ -36,7 +36,7 @@ void ShadingPerturbation::apply(SurfaceInteraction &si) const {
     Vec3f bumped_dpdu, bumped_dpdv;
     if (normal_map_) {
         float rgb[3];
-        normal_map_->lookup(si.uv, ImageWrap::Repeat, false, rgb);
+        normal_map_->lookup(si.uv, ImageWrap::Repeat, rgb);
         const Vec3f local = normalize(Vec3f(2 * rgb[0] - 1, 2 * rgb[1] - 1, 2 * rgb[2] - 1));
         const Vec3f ns = Frame::from_xz(normalize(dpdu), n).from_local(local);
         // Tangents of the same lengths, perpendicular to the new normal.

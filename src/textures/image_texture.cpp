@@ -56,16 +56,7 @@ float TexelImage::texel(int x, int y, int c, ImageWrap wrap) const {
     return texels_[(size_t(y) * width_ + x) * channels_ + c];
 }
 
-void TexelImage::lookup(Vec2f st, ImageWrap wrap, bool nearest, float *out) const {
-    // Continuous texel coordinates with texel centres at half-integers, and t = 0 at the bottom.
-    const double x = double(st.x) * width_, y = (1 - double(st.y)) * height_;
-    if (nearest) {
-        const int xi = int(std::floor(x)), yi = int(std::floor(y));
-        for (int c = 0; c < channels_; ++c) out[c] = texel(xi, yi, c, wrap);
-        return;
-    }
-    bilerp({st.x, 1 - st.y}, wrap, out);
-}
+void TexelImage::lookup(Vec2f st, ImageWrap wrap, float *out) const { bilerp({st.x, 1 - st.y}, wrap, out); }
 
 void TexelImage::bilerp(Vec2f st, ImageWrap wrap, float *out) const {
     const double xs = double(st.x) * width_ - 0.5, ys = double(st.y) * height_ - 0.5;
@@ -79,7 +70,7 @@ void TexelImage::bilerp(Vec2f st, ImageWrap wrap, float *out) const {
 // The MIP map's filtered value at the lookup's texture coordinates. The image's rows run down
 // while t runs up; the footprint is passed unflipped, as pbrt-v4 passes it (which mirrors an EWA
 // ellipse's orientation; trilinear lookups do not see it).
-void filtered_lookup(const ImageLookup &lookup, const TextureEvalContext &ctx, float *out) {
+static void filtered_lookup(const ImageLookup &lookup, const TextureEvalContext &ctx, float *out) {
     const TexCoord2D c = lookup.mapping.map(ctx);
     lookup.mipmap->filter({c.st.x, 1 - c.st.y}, {c.dsdx, c.dtdx}, {c.dsdy, c.dtdy}, out);
 }

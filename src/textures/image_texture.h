@@ -30,9 +30,9 @@ enum class ImageWrap { Repeat, Black, Clamp, OctahedralSphere };
 class TexelImage {
   public:
     TexelImage(int width, int height, int channels, std::vector<float> texels);
-    // The interpolated channels at texture coordinates st, t = 0 at the bottom row (written to
-    // out[0 .. channels)).
-    void lookup(Vec2f st, ImageWrap wrap, bool nearest, float *out) const;
+    // The bilinearly interpolated channels at texture coordinates st, t = 0 at the bottom row
+    // (written to out[0 .. channels)).
+    void lookup(Vec2f st, ImageWrap wrap, float *out) const;
     // The bilinearly interpolated channels at st, t = 0 at the top row (pbrt-v4's Image::Bilerp).
     void bilerp(Vec2f st, ImageWrap wrap, float *out) const;
     // Texel (x, y)'s channel c, by the wrap mode outside the image (0 with ImageWrap::Black).
