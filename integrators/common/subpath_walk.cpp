@@ -41,7 +41,7 @@ WalkEvent SubpathWalk::advance() {
         const bool hit = scene_.intersect(ray_, &si_);
         const float speed = length(ray_.d);
         const PathSegment segment = traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed, Infinity, ray_.time},
-                                                     hit ? si_.t * speed : Infinity, lambda_, sampler_, free_flight_);
+                                                     hit ? si_.t * speed : Infinity, lambda_, sampler_, spectral_mis_);
         if (mode_ == TransportMode::Radiance) emitted_ += beta * segment.emitted;
         beta *= segment.weight;
         if (beta.is_black()) return WalkEvent::Ended;
@@ -95,9 +95,12 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
     }
     const BSDF &bsdf = point_.bsdf;
     const Vec3f wo = si_.wo;
+    // Lane lobes (rough dispersive refraction) are sampled with the subpath's spectral MIS lane.
+    const int lane = bsdf.has_lane_lobes() ? spectral_mis_.lane(lambda_, sampler_) : -1;
     // A jump's exit leaves by its exit lobe, a single lobe: no lobe choice is drawn.
     const float u = after_jump_ ? 0.f : sampler_.get_1d();
-    const std::optional<BSDFSample> bs = bsdf.sample_f(wo, u, sampler_.get_2d(), mode_);
+    const std::optional<BSDFSample> bs =
+        lane < 0 ? bsdf.sample_f(wo, u, sampler_.get_2d(), mode_) : bsdf.sample_f_as(lane, wo, u, sampler_.get_2d(), mode_);
     if (!bs) return std::nullopt;
     // Hero-wavelength sampling (Wilkie et al. 2014): a direction that depends on wavelength is
     // valid for the hero alone; the other lanes end here, before the densities are evaluated.
@@ -106,11 +109,13 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
         for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
     }
     s.wi = bs->wi;
-    s.pdf_fwd = bs->pdf_is_proportional ? bsdf.pdf(wo, bs->wi, mode_) : bs->pdf;
+    // The strategies' MIS takes the BSDF's own density, the lanes' mean for lane lobes.
+    s.pdf_fwd = bs->pdf_is_proportional ? bsdf.pdf(wo, bs->wi, mode_) : bs->lane_pdf ? bs->lane_pdf->average() : bs->pdf;
     if (reverse_densities_) s.pdf_rev = bsdf.pdf(bs->wi, wo, adjoint(mode_));
     s.cos_out = abs_dot(si_.n, bs->wi);
     s.specular = bs->is_specular();
-    beta *= bs->f * (scattering_cosine(mode_, si_, wo, bs->wi) / bs->pdf);
+    const float inverse_pdf = bs->lane_pdf ? spectral_mis_.inverse_density(*bs->lane_pdf) : 1 / bs->pdf;
+    beta *= bs->f * (scattering_cosine(mode_, si_, wo, bs->wi) * inverse_pdf);
     if (!after_jump_) {
         s.profile = profile_entry(si_, *bs);
         if (s.profile) return s;

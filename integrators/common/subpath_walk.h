@@ -3,9 +3,10 @@
 // the mechanics of moving a path through the scene:
 //   - tracing, and crossing surfaces that only bound media (shapes without a material, and the
 //     "interface" material);
-//   - free flights through participating media with the spectral MIS over the carried
-//     wavelengths (FreeFlightMIS, path_segment.h), and the medium the path is in, tracked across
+//   - free flights through participating media, and the medium the path is in, tracked across
 //     every interface (medium_after);
+//   - the spectral MIS over the carried wavelengths for the decisions that depend on them: free
+//     flights and rough dispersive refraction (SpectralMIS, spectral_mis.h);
 //   - Beer-Lambert absorption inside absorbing dielectrics;
 //   - sampling the phase function or the BSDF in the subpath's transport mode, with the adjoint
 //     shading-normal correction for importance (Veach 1997, 5.3) and eta^2 bookkeeping for
@@ -139,7 +140,7 @@ class SubpathWalk {
     std::optional<RayDifferential> differential_;
     const Medium *medium_ = nullptr;
     const Material *absorbing_interior_ = nullptr;
-    FreeFlightMIS free_flight_;
+    SpectralMIS spectral_mis_;
     SampledSpectrum emitted_{0.f};
     SurfaceInteraction si_;
     ScatteringPoint point_;

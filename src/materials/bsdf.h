@@ -32,6 +32,17 @@ class BSDF {
         bs->wi = from_local(bs->wi);
         return bs;
     }
+    bool has_lane_lobes() const { return bxdf_->has_lane_lobes(); }
+    // sample_f as wavelength `lane` samples (BxDF::sample_f_as).
+    std::optional<BSDFSample> sample_f_as(int lane, Vec3f wo_world, float uc, Vec2f u2,
+                                          TransportMode mode = TransportMode::Radiance) const {
+        Vec3f wo = to_local(wo_world);
+        if (wo.z == 0) return {};
+        auto bs = bxdf_->sample_f_as(lane, wo, uc, u2, mode);
+        if (!bs || bs->f.is_black() || bs->pdf == 0 || bs->wi.z == 0) return {};
+        bs->wi = from_local(bs->wi);
+        return bs;
+    }
     float pdf(Vec3f wo_world, Vec3f wi_world, TransportMode mode = TransportMode::Radiance,
               SampleFlags sample_flags = SampleFlags::All) const {
         Vec3f wo = to_local(wo_world), wi = to_local(wi_world);

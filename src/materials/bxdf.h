@@ -61,6 +61,10 @@ struct BSDFSample {
     // True when pdf is the density of a strategy other than the BxDF's own (never in practice
     // for the BxDFs here, kept so integrators can skip MIS with such samples).
     bool pdf_is_proportional = false;
+    // From BxDF::sample_f_as (a BxDF with lane lobes): per wavelength, the density with which
+    // sample_f_as(that lane, wo, ...) returns wi. pdf is the sampling lane's entry. Empty when
+    // every lane samples wi alike (reflections, and every other BxDF).
+    std::optional<SampledSpectrum> lane_pdf;
 
     bool is_reflection() const { return caustica::is_reflective(flags); }
     bool is_transmission() const { return caustica::is_transmissive(flags); }
@@ -87,6 +91,19 @@ class BxDF {
     virtual float pdf(Vec3f wo, Vec3f wi, TransportMode mode,
                       SampleFlags flags = SampleFlags::All) const = 0;
     virtual BxDFFlags flags() const = 0;
+
+    // Lane lobes: the glossy lobes differ between the carried wavelengths (rough refraction
+    // through a dispersive index), so that no one wavelength's sampling suits them all. Such a
+    // BxDF samples as any one lane would (sample_f_as) and reports every lane's density of the
+    // result (BSDFSample::lane_pdf), for the spectral MIS of the whole subpath
+    // (integrators/common/spectral_mis.h). Its sample_f draws the lane from uc, and its pdf is
+    // the lanes' mean: the density of sampling with a lane chosen uniformly at each call.
+    virtual bool has_lane_lobes() const { return false; }
+    virtual std::optional<BSDFSample> sample_f_as(int lane, Vec3f wo, float uc, Vec2f u, TransportMode mode) const {
+        (void)lane;
+        return sample_f(wo, uc, u, mode);
+    }
+
     // f and both densities in one call, for BxDFs that share work between them (the default
     // makes the three calls).
     virtual BxDFEvaluation evaluate(Vec3f wo, Vec3f wi, TransportMode mode) const {

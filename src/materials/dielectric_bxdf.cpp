@@ -49,11 +49,16 @@ DielectricBxDF::DielectricBxDF(const SampledSpectrum &eta,
             index_matched_ = false;
     }
     partly_matched_ = any_matched && !index_matched_;
+    lane_lobes_ = dispersive_ && !any_matched && !distribution_.effectively_smooth();
 }
 
 float DielectricBxDF::lane_reflectance(float cos_d, int lane) const {
     if (is_matched_lane(lane)) return 0;
     return film_.present() ? film_.over_dielectric(cos_d, eta_[lane], lane) : fresnel_dielectric(cos_d, eta_[lane]);
+}
+
+float DielectricBxDF::choice_reflectance(float cos_d, int lane) const {
+    return lane_lobes_ ? lane_reflectance(cos_d, lane) : selection_reflectance(cos_d);
 }
 
 float DielectricBxDF::selection_reflectance(float cos_d) const {
@@ -89,7 +94,23 @@ std::optional<BSDFSample> DielectricBxDF::sample_f(Vec3f wo, float uc, Vec2f u,
         return s;
     }
     if (distribution_.effectively_smooth()) return sample_specular(wo, uc, mode, flags);
-    return sample_rough(wo, uc, u, mode, flags);
+    if (!lane_lobes_) return sample_rough(wo, uc, u, mode, flags, 0);
+    // The lane is uniform, from uc; the rest of uc chooses the lobe. The density is the lanes'
+    // mean, pdf()'s.
+    const float scaled = uc * NumWavelengths;
+    const int lane = std::min(int(scaled), NumWavelengths - 1);
+    std::optional<BSDFSample> s = sample_rough(wo, std::min(scaled - lane, OneMinusEpsilon), u, mode, flags, lane);
+    if (s && s->lane_pdf) {
+        s->pdf = s->lane_pdf->average();
+        s->lane_pdf.reset();
+    }
+    return s;
+}
+
+std::optional<BSDFSample> DielectricBxDF::sample_f_as(int lane, Vec3f wo, float uc, Vec2f u, TransportMode mode) const {
+    if (!lane_lobes_) return sample_f(wo, uc, u, mode);
+    if (wo.z == 0) return {};
+    return sample_rough(wo, uc, u, mode, SampleFlags::All, lane);
 }
 
 std::optional<BSDFSample> DielectricBxDF::sample_specular(Vec3f wo, float uc, TransportMode mode,
@@ -124,11 +145,11 @@ std::optional<BSDFSample> DielectricBxDF::sample_specular(Vec3f wo, float uc, Tr
     return s;
 }
 
-std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f u,
-                                                       TransportMode mode, SampleFlags flags) const {
+std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f u, TransportMode mode,
+                                                       SampleFlags flags, int lane) const {
     Vec3f wm = distribution_.sample_wm(wo, u);
     float wo_dot_m = dot(wo, wm);
-    LobeChoice lobes = choose_lobes(selection_reflectance(wo_dot_m), flags);
+    LobeChoice lobes = choose_lobes(choice_reflectance(wo_dot_m, lane), flags);
     if (lobes.empty()) return {};
     float cos_o = std::abs(wo.z);
     BSDFSample s;
@@ -141,10 +162,20 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
             s.f[i] = lane_reflectance(wo_dot_m, i) * common;
         s.pdf = distribution_.reflection_pdf(wo, wm) * lobes.reflection_probability();
         s.flags = BxDFGlossyReflection;
+        if (lane_lobes_) {
+            // Every lane reflects off the sampled facet, each choosing reflection with its own
+            // Fresnel term.
+            SampledSpectrum p;
+            for (int i = 0; i < NumWavelengths; ++i)
+                p[i] = distribution_.reflection_pdf(wo, wm) *
+                       choose_lobes(lane_reflectance(wo_dot_m, i), flags).reflection_probability();
+            s.lane_pdf = p;
+            s.pdf = p[lane];
+        }
         return s;
     }
     float etap;
-    if (!refract(wo, wm, eta_[0], &etap, &s.wi)) return {};
+    if (!refract(wo, wm, eta_[lane], &etap, &s.wi)) return {};
     if (same_hemisphere(wo, s.wi) || s.wi.z == 0) return {};
     // The sample is evaluated where f() and pdf() evaluate it: at the half vector recovered
     // from (wo, wi), not at the sampled facet. Near eta = 1 the recovered vector is a difference
@@ -157,7 +188,7 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
     if (!recovered) return {};
     wm = *recovered;
     wo_dot_m = dot(wo, wm);
-    lobes = choose_lobes(selection_reflectance(wo_dot_m), flags);
+    lobes = choose_lobes(choice_reflectance(wo_dot_m, lane), flags);
     if (lobes.pt == 0) return {};
     float wi_dot_m = dot(s.wi, wm);
     // Jacobian of the refraction half-vector map (Walter et al. 2007, eq. 17).
@@ -166,14 +197,16 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
     s.pdf = distribution_.pdf(wo, wm) * std::abs(wi_dot_m) / denom * lobes.transmission_probability();
     s.flags = BxDFGlossyTransmission;
     s.eta = etap;
-    float narrowest_alpha = std::min(distribution_.alpha_x(), distribution_.alpha_y());
     if (!dispersive_) {
         s.f = rough_transmission_shared_index(wo, s.wi, mode);
-    } else if (partly_matched_ || narrowest_alpha < DispersiveAlphaThreshold) {
+    } else if (partly_matched_) {
         s.f[0] = rough_transmission(wo, s.wi, 0, mode);
         s.dispersive = true;
     } else {
         for (int i = 0; i < NumWavelengths; ++i) s.f[i] = rough_transmission(wo, s.wi, i, mode);
+        s.lane_pdf = lane_pdfs(wo, s.wi, flags);
+        s.pdf = (*s.lane_pdf)[lane];
+        if (s.pdf == 0) return {};
     }
     return s;
 }
@@ -226,6 +259,17 @@ SampledSpectrum DielectricBxDF::f(Vec3f wo, Vec3f wi, TransportMode mode) const 
 float DielectricBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) const {
     // A hero in the index-matched band samples only its straight-through delta.
     if (specular() || is_matched_lane(0)) return 0;
+    if (!lane_lobes_) return lane_pdf(wo, wi, 0, flags);
+    return lane_pdfs(wo, wi, flags).average();
+}
+
+SampledSpectrum DielectricBxDF::lane_pdfs(Vec3f wo, Vec3f wi, SampleFlags flags) const {
+    SampledSpectrum p;
+    for (int i = 0; i < NumWavelengths; ++i) p[i] = lane_pdf(wo, wi, i, flags);
+    return p;
+}
+
+float DielectricBxDF::lane_pdf(Vec3f wo, Vec3f wi, int lane, SampleFlags flags) const {
     float cos_o = wo.z, cos_i = wi.z;
     if (cos_o == 0 || cos_i == 0) return 0;
     bool reflection = cos_o * cos_i > 0;
@@ -235,19 +279,19 @@ float DielectricBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) 
         if (length_squared(wm) == 0) return 0;
         wm = face_forward(normalize(wm), Vec3f(0, 0, 1));
     } else {
-        std::optional<Vec3f> m = transmission_half_vector(wo, wi, relative_eta(cos_o, eta_[0]));
+        std::optional<Vec3f> m = transmission_half_vector(wo, wi, relative_eta(cos_o, eta_[lane]));
         if (!m) return 0;
         wm = *m;
     }
     float wo_dot_m = dot(wo, wm), wi_dot_m = dot(wi, wm);
-    LobeChoice lobes = choose_lobes(selection_reflectance(wo_dot_m), flags);
+    LobeChoice lobes = choose_lobes(choice_reflectance(wo_dot_m, lane), flags);
     if (lobes.empty()) return 0;
     if (reflection) {
         if (lobes.pr == 0) return 0;
         return distribution_.reflection_pdf(wo, wm) * lobes.reflection_probability();
     }
     if (lobes.pt == 0) return 0;
-    float denom = sqr(wi_dot_m + wo_dot_m / relative_eta(cos_o, eta_[0]));
+    float denom = sqr(wi_dot_m + wo_dot_m / relative_eta(cos_o, eta_[lane]));
     if (denom == 0) return 0;
     return distribution_.pdf(wo, wm) * std::abs(wi_dot_m) / denom * lobes.transmission_probability();
 }

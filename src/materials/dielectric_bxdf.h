@@ -5,10 +5,17 @@
 //
 // eta is the index of the inside (the side -z points into) relative to the outside, one value
 // per wavelength so that dispersion can be modelled. Reflection is exact for every wavelength
-// (the direction does not depend on it). Refraction follows the hero wavelength (lane 0): when
-// the sampled direction is a refraction through a wavelength-dependent eta, BSDFSample::
-// dispersive is set so the integrator terminates the secondary wavelengths, whose lanes in the
-// sample's f are then zero (their delta lies in another direction).
+// (the direction does not depend on it). Smooth refraction through a wavelength-dependent eta
+// follows the hero wavelength (lane 0) and sets BSDFSample::dispersive, so the integrator
+// terminates the secondary wavelengths, whose lanes in the sample's f are then zero (their delta
+// lies in another direction). Rough refraction through it keeps every wavelength: each lane's
+// transmission lobe is its own (the lane lobes of BxDF::has_lane_lobes), so the BxDF samples as
+// any one lane would (its facets refract by its index, its own Fresnel term chooses the lobe) and
+// reports every lane's density, and the subpath's spectral MIS weighs each wavelength by
+// f_i / mean_k p_k (integrators/common/spectral_mis.h). That weight is at most NumWavelengths
+// f_i / p_i = NumWavelengths G / G1 (over eta'^2 for radiance), bounded however narrow the lobes,
+// where weighing the secondaries by the hero's density alone, f_i / p_0, diverges at the edge of
+// the hero's lobe.
 //
 // Transmission in Radiance mode carries the 1/eta'^2 factor of radiance compression across the
 // interface, where eta' is the index on wi's side over the index on wo's side; Importance mode
@@ -40,16 +47,6 @@ class DielectricBxDF final : public BxDF {
     // rough model itself degenerates: at eta' = 1 its transmission f grows as 1 / |wi + wo|^2,
     // which is not integrable around wi = -wo.)
     static constexpr float IndexMatchedTolerance = 1e-4f;
-    // Rough transmission through a dispersive eta keeps the secondary wavelengths (each lane
-    // evaluates f exactly with its own half vector) unless the lobe is narrower than this alpha
-    // along either axis (the smaller of alpha_x and alpha_y: an anisotropic lobe that is narrow
-    // along one axis does not overlap its neighbours there, whatever its width along the other).
-    // The reason is variance, not bias: the secondaries are estimated with the hero's sampling
-    // density, and their refracted lobes are offset from the hero's by the angular dispersion,
-    // roughly delta_n * tan(theta) -- up to about 0.05 rad for dense flint glass over the
-    // visible range. Lobes narrower than that offset barely overlap, so f_secondary / pdf_hero
-    // becomes rare, huge spikes; wider lobes overlap enough to keep the ratio bounded.
-    static constexpr float DispersiveAlphaThreshold = 0.05f;
 
     // With a film (thin_film.h), every lane reflects the film's reflectance over the interface
     // and transmits the rest; the film does not change directions, so it keeps all lanes. A
@@ -64,6 +61,13 @@ class DielectricBxDF final : public BxDF {
     float pdf(Vec3f wo, Vec3f wi, TransportMode mode,
               SampleFlags flags = SampleFlags::All) const override;
     BxDFFlags flags() const override;
+
+    // Rough and dispersive, with no lane in the index-matched band (where a lane's lobe is a
+    // delta, and the hero alone is followed as on a smooth interface).
+    bool has_lane_lobes() const override { return lane_lobes_; }
+    std::optional<BSDFSample> sample_f_as(int lane, Vec3f wo, float uc, Vec2f u, TransportMode mode) const override;
+    // Per lane, the density with which sample_f_as(that lane, ...) returns wi.
+    SampledSpectrum lane_pdfs(Vec3f wo, Vec3f wi, SampleFlags flags = SampleFlags::All) const;
 
     // True when the lanes' etas differ, so refraction directions depend on wavelength.
     bool is_dispersive() const { return dispersive_; }
@@ -83,13 +87,21 @@ class DielectricBxDF final : public BxDF {
     // reflection weight F_i / F at most NumWavelengths; the hero's F alone would give F_i / F_0,
     // unbounded where F_0 nearly vanishes (a hero index at or near 1 while other lanes reflect).
     float selection_reflectance(float cos_d) const;
+    // The reflectance that chooses the lobe when sampling as `lane`: with lane lobes, the lane's
+    // own, so that each lane samples its own BSDF exactly up to G / G1 (and the spectral MIS
+    // bounds a whole subpath by NumWavelengths, where the average's ratios F_i / F multiply
+    // from vertex to vertex); otherwise selection_reflectance.
+    float choice_reflectance(float cos_d, int lane) const;
     // Reflectance of one lane (Fresnel's, or the film's over the interface): zero for a lane in
     // the index-matched band.
     float lane_reflectance(float cos_d, int lane) const;
     std::optional<BSDFSample> sample_specular(Vec3f wo, float uc, TransportMode mode,
                                               SampleFlags flags) const;
-    std::optional<BSDFSample> sample_rough(Vec3f wo, float uc, Vec2f u, TransportMode mode,
-                                           SampleFlags flags) const;
+    // Samples the rough interface as wavelength `lane` would: its facets refract by its index.
+    std::optional<BSDFSample> sample_rough(Vec3f wo, float uc, Vec2f u, TransportMode mode, SampleFlags flags,
+                                           int lane) const;
+    // The density with which sample_rough(..., lane) returns wi.
+    float lane_pdf(Vec3f wo, Vec3f wi, int lane, SampleFlags flags) const;
     // Rough transmission value of wavelength `lane`.
     float rough_transmission(Vec3f wo, Vec3f wi, int lane, TransportMode mode) const;
     // Rough transmission of every lane when they share one index (no dispersion).
@@ -101,6 +113,7 @@ class DielectricBxDF final : public BxDF {
     bool dispersive_ = false, index_matched_ = false;
     // Some lanes, not all, are in the index-matched band.
     bool partly_matched_ = false;
+    bool lane_lobes_ = false;
 };
 
 } // namespace caustica

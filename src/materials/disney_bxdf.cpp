@@ -353,6 +353,15 @@ float DisneyBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode mode, SampleFlags flags)
 
 std::optional<BSDFSample> DisneyBxDF::sample_f(Vec3f wo, float uc, Vec2f u, TransportMode mode,
                                                SampleFlags flags) const {
+    return sample(wo, uc, u, mode, flags, -1);
+}
+
+std::optional<BSDFSample> DisneyBxDF::sample_f_as(int lane, Vec3f wo, float uc, Vec2f u, TransportMode mode) const {
+    return sample(wo, uc, u, mode, SampleFlags::All, has_lane_lobes() ? lane : -1);
+}
+
+std::optional<BSDFSample> DisneyBxDF::sample(Vec3f wo, float uc, Vec2f u, TransportMode mode, SampleFlags flags,
+                                             int lane) const {
     if (wo.z == 0) return {};
     LobeProbabilities lobes = lobe_probabilities(wo, flags);
     // Choose a lobe with uc and rescale uc to [0, 1) for the lobe's own use.
@@ -371,7 +380,8 @@ std::optional<BSDFSample> DisneyBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tran
 
     BSDFSample s;
     if (lobe == SpecularBSDF) {
-        std::optional<BSDFSample> g = specular_bsdf_.sample_f(wo, uc_lobe, u, mode, flags);
+        std::optional<BSDFSample> g = lane < 0 ? specular_bsdf_.sample_f(wo, uc_lobe, u, mode, flags)
+                                               : specular_bsdf_.sample_f_as(lane, wo, uc_lobe, u, mode);
         if (!g) return {};
         if (g->is_specular()) {
             g->f *= specular_bsdf_weight_;
@@ -452,6 +462,13 @@ std::optional<BSDFSample> DisneyBxDF::sample_f(Vec3f wo, float uc, Vec2f u, Tran
     s.pdf = pdf(wo, s.wi, mode, flags);
     if (s.dispersive)
         for (int i = 1; i < NumWavelengths; ++i) s.f[i] = 0;
+    if (lane >= 0 && lobes.p[SpecularBSDF] > 0) {
+        // Only the specular BSDF's density differs between lanes.
+        const SampledSpectrum lanes = specular_bsdf_.lane_pdfs(wo, s.wi, flags) * lobes.p[SpecularBSDF];
+        const float others = std::max(0.f, s.pdf - lanes.average());
+        s.lane_pdf = lanes + SampledSpectrum(others);
+        s.pdf = (*s.lane_pdf)[lane];
+    }
     if (s.pdf == 0) return {};
     return s;
 }

@@ -118,6 +118,10 @@ class DisneyBxDF final : public BxDF {
     float pdf(Vec3f wo, Vec3f wi, TransportMode mode,
               SampleFlags flags = SampleFlags::All) const override;
     BxDFFlags flags() const override;
+    // Those of the specular BSDF (a rough dispersive solid): its share of every density is then
+    // per lane, the other lobes' are not.
+    bool has_lane_lobes() const override { return present_[SpecularBSDF] && specular_bsdf_.has_lane_lobes(); }
+    std::optional<BSDFSample> sample_f_as(int lane, Vec3f wo, float uc, Vec2f u, TransportMode mode) const override;
 
     // The 2012 mapping from roughness and anisotropic to GGX alphas: alpha = roughness^2,
     // stretched by aspect = sqrt(1 - 0.9 anisotropic) (alpha_x = alpha / aspect along dpdu).
@@ -142,6 +146,10 @@ class DisneyBxDF final : public BxDF {
         float p[LobeCount] = {};
     };
     LobeProbabilities lobe_probabilities(Vec3f wo, SampleFlags flags) const;
+    // sample_f, with the specular BSDF sampled as wavelength `lane` (BxDF::sample_f_as), or as it
+    // chooses (lane < 0).
+    std::optional<BSDFSample> sample(Vec3f wo, float uc, Vec2f u, TransportMode mode, SampleFlags flags,
+                                     int lane) const;
     // Sheen and clearcoat are layers on the outside: a solid's inside (wo.z < 0) has neither,
     // while both faces of a thin surface are outsides.
     bool coated(Vec3f wo) const { return thin_ || wo.z > 0; }

@@ -11,7 +11,7 @@
 //   Transport"), so the chain of null collisions has an exact density under every wavelength's
 //   coefficients: the product of T_maj sigma_n over the nulls, times T_maj sigma_t at the real
 //   collision (or T_maj at the end). MediumEvent reports that chain's contribution and density
-//   per wavelength, and the path's spectral MIS (FreeFlightMIS) weighs it as it weighs a
+//   per wavelength, and the path's spectral MIS (SpectralMIS) weighs it as it weighs a
 //   homogeneous free flight: this is pbrt-v4's r_u bookkeeping in VolPathIntegrator. A real
 //   collision scatters with weight sigma_s / sigma_t, as in the homogeneous media (absorption is
 //   not sampled as an event). In an emissive medium it also reports the emission there,

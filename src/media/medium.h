@@ -8,7 +8,7 @@
 // extinction for each. A medium samples a distance with the coefficients of one of them (the
 // subpath's "lane") and reports the event's density under every wavelength's coefficients; the
 // path combines the densities of all its events by multiple importance sampling over the
-// wavelengths (integrators/common/path_segment.h, FreeFlightMIS). A medium that does not scatter
+// wavelengths (integrators/common/spectral_mis.h, SpectralMIS). A medium that does not scatter
 // at the carried wavelengths samples nothing: the event is the transmittance itself, with density
 // 1 for every wavelength.
 #pragma once

@@ -164,7 +164,7 @@ TEST(SubsurfaceRender, TexturedRandomWalkReflectsWhatTheTexturedBRDFReflects) {
 
 // A bright, saturated colour: the random walk's blue channel (albedo 0.9) takes hundreds of
 // scattering events while red (0.3) takes few, and the four wavelengths' extinctions differ by
-// a factor of 2.4. Free-flight weights combined over the whole walk (FreeFlightMIS) keep the
+// a factor of 2.4. Free-flight weights combined over the whole walk (SpectralMIS) keep the
 // estimate unbiased and its spread small. Weighing each event on its own, as before, was
 // heavy-tailed: with this scene and seed it reflected 0.909 in blue against the BRDF's 0.945,
 // with a standard error of 0.017 that its outliers inflated (pixel values up to 4.95). So the

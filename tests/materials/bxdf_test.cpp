@@ -354,34 +354,48 @@ TEST(BxDF, DispersiveSmoothDielectric) {
 }
 
 TEST(BxDF, DispersiveRoughDielectric) {
+    // However narrow the lobes, rough refraction keeps every wavelength: each lane's f is that
+    // wavelength's own BSDF value for the sampled pair, as a single-wavelength BxDF computes it.
+    // Sampled as lane k (sample_f_as), the sample's density is lane k's entry of lane_pdf, which
+    // holds every lane's (their distributions are checked in chi_square_test.cpp); sample_f's
+    // density is their mean, pdf()'s.
     SampledSpectrum eta(1.50f, 1.52f, 1.54f, 1.56f);
     Vec3f wo = normalize(Vec3f(0.5f, 0.1f, 0.8f));
     Rng rng(13, 1);
-    for (float alpha : {0.01f, 0.3f}) {
+    for (float alpha : {0.003f, 0.01f, 0.3f}) {
         DielectricBxDF b(eta, TrowbridgeReitzDistribution(alpha, alpha));
-        bool near_specular = alpha < DielectricBxDF::DispersiveAlphaThreshold;
+        EXPECT_TRUE(b.has_lane_lobes());
         int transmissions = 0;
         for (int n = 0; n < 200; ++n) {
-            auto s = b.sample_f(wo, rng.uniform(), rng.uniform2(), TransportMode::Radiance);
+            const int sampling_lane = n % NumWavelengths;
+            const float uc = rng.uniform();
+            const Vec2f u = rng.uniform2();
+            auto s = b.sample_f_as(sampling_lane, wo, uc, u, TransportMode::Radiance);
             if (!s) continue;
-            if (s->is_reflection()) {
-                EXPECT_FALSE(s->dispersive);
-                continue;
-            }
+            EXPECT_FALSE(s->dispersive);
+            ASSERT_TRUE(s->lane_pdf);
+            EXPECT_EQ((*s->lane_pdf)[sampling_lane], s->pdf);
+            if (s->is_reflection()) continue;
             ++transmissions;
-            EXPECT_EQ(s->dispersive, near_specular);
-            // Every kept lane is that wavelength's own BSDF value for the sampled pair, as a
-            // single-wavelength BxDF computes it.
-            for (int i = 0; i < (near_specular ? 1 : NumWavelengths); ++i) {
+            for (int i = 0; i < NumWavelengths; ++i) {
                 DielectricBxDF lane(SampledSpectrum(eta[i]), TrowbridgeReitzDistribution(alpha, alpha));
-                expect_relative(s->f[i], lane.f(wo, s->wi, TransportMode::Radiance)[0], 1e-3f, "lane");
+                expect_relative(s->f[i], lane.f(wo, s->wi, TransportMode::Radiance)[0], 1e-3f, "lane f");
             }
-            if (near_specular) {
-                for (int i = 1; i < NumWavelengths; ++i) EXPECT_EQ(s->f[i], 0);
+            expect_relative(b.pdf(wo, s->wi, TransportMode::Radiance), s->lane_pdf->average(), 1e-5f, "mean pdf");
+            // sample_f draws the lane from uc; its density is the mean.
+            auto mixed = b.sample_f(wo, rng.uniform(), rng.uniform2(), TransportMode::Radiance);
+            if (mixed) {
+                EXPECT_FALSE(mixed->lane_pdf);
+                expect_relative(mixed->pdf, b.pdf(wo, mixed->wi, TransportMode::Radiance), 1e-3f, "sample_f pdf");
             }
         }
         EXPECT_GT(transmissions, 100);
     }
+    // Smooth, it stays the hero's: one direction per wavelength.
+    EXPECT_FALSE(DielectricBxDF(eta, TrowbridgeReitzDistribution(0, 0)).has_lane_lobes());
+    // A lane in the index-matched band has a delta lobe: the hero is followed alone.
+    EXPECT_FALSE(DielectricBxDF(SampledSpectrum(1.3f, 1.0f, 1.2f, 1.1f), TrowbridgeReitzDistribution(0.3f, 0.3f))
+                     .has_lane_lobes());
 }
 
 TEST(BxDF, SmoothConductorReflectsFresnel) {

@@ -144,6 +144,29 @@ std::vector<Case> build_cases() {
                                   wo, mode, SampleFlags::All, {});
             }
 
+    // Rough dispersive refraction (lane lobes): sample_f draws the lane and has the lanes' mean
+    // density; sample_f_as samples as one lane, with that lane's density. A strongly dispersive
+    // index spreads the lanes' lobes apart.
+    const SampledSpectrum dispersive_eta(1.3f, 1.5f, 1.8f, 2.4f);
+    for (float theta : {20.f, 70.f, 140.f}) {
+        TransportMode mode = next_mode();
+        Vec3f wo = direction_at(theta);
+        auto gem = std::make_shared<DielectricBxDF>(dispersive_eta, TrowbridgeReitzDistribution(0.3f, 0.3f));
+        add_bxdf_case(cases, gem, describe("dispersive dielectric", 0.3f, 0.3f, 1.3f, theta, mode, SampleFlags::All),
+                      wo, mode, SampleFlags::All, {});
+        for (int lane : {0, 3})
+            cases.push_back({describe(lane ? "dispersive dielectric as lane 3" : "dispersive dielectric as lane 0", 0.3f,
+                                      0.3f, 1.3f, theta, mode, SampleFlags::All),
+                             [=](float uc, Vec2f u, Vec3f *w) {
+                                 auto s = gem->sample_f_as(lane, wo, uc, u, mode);
+                                 if (!s) return false;
+                                 *w = s->wi;
+                                 return true;
+                             },
+                             [=](Vec3f wi) { return double(gem->lane_pdfs(wo, wi)[lane]); },
+                             {}});
+    }
+
     // Thin films (thin_film.h): the lanes' average reflectance chooses between the lobes.
     ThinFilm film;
     film.thickness_nm = 350;

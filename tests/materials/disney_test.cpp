@@ -267,6 +267,35 @@ TEST(DisneyBxDF, SampledValuesMatchEvaluation) {
     }
 }
 
+TEST(DisneyBxDF, RoughDispersiveGlassSamplesAsOneLane) {
+    // The specular BSDF of a rough dispersive solid has lane lobes (BxDF::has_lane_lobes):
+    // sampled as lane k, a sample reports every lane's density of the whole BSDF, lane k's being
+    // the sample's, and their mean is pdf(), the density of sample_f. Every lane is kept.
+    DisneyParameters p;
+    p.base_color = SampledSpectrum(0.8f), p.base_luminance = 0.8f;
+    p.spec_trans = 0.8f, p.roughness = 0.3f, p.eta = SampledSpectrum(1.50f, 1.60f, 1.70f, 1.80f);
+    DisneyBxDF b(p);
+    ASSERT_TRUE(b.has_lane_lobes());
+    Rng rng(21, 3);
+    int refractions = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const Vec3f wo = random_direction(rng);
+        const int lane = k % NumWavelengths;
+        auto s = b.sample_f_as(lane, wo, rng.uniform(), rng.uniform2(), TransportMode::Radiance);
+        if (!s) continue;
+        EXPECT_FALSE(s->dispersive);
+        const SampledSpectrum f = b.f(wo, s->wi, TransportMode::Radiance);
+        for (int i = 0; i < NumWavelengths; ++i) expect_relative(s->f[i], f[i], 1e-4f, "f");
+        refractions += s->is_transmission();
+        ASSERT_TRUE(s->lane_pdf);
+        EXPECT_EQ((*s->lane_pdf)[lane], s->pdf);
+        expect_relative(s->lane_pdf->average(), b.pdf(wo, s->wi, TransportMode::Radiance), 1e-4f, "mean pdf");
+    }
+    EXPECT_GT(refractions, 200);
+    p.eta = SampledSpectrum(1.5f);
+    EXPECT_FALSE(DisneyBxDF(p).has_lane_lobes());
+}
+
 // ---------------------------------------------------------------------------------------------
 // Numerical integration over directions, independent of the BxDF's sampling.
 
