@@ -1,6 +1,7 @@
 #include "spectral/sampled_wavelengths.h"
 
 #include "core/vecmath.h"
+#include "spectral/wavelength_density.h"
 
 namespace caustica {
 
@@ -29,6 +30,18 @@ SampledWavelengths SampledWavelengths::sample_visible(float u) {
     return s;
 }
 
+SampledWavelengths SampledWavelengths::sample(const WavelengthDensity &density, float u) {
+    SampledWavelengths s;
+    for (int i = 0; i < NumWavelengths; ++i) {
+        float rotated = u + float(i) / NumWavelengths;
+        if (rotated >= 1) rotated -= 1;
+        s.lambda_[i] = density.sample(rotated);
+        s.pdf_[i] = density.pdf(s.lambda_[i]);
+    }
+    s.hero_pdf_ = s.pdf_[0];
+    return s;
+}
+
 SampledWavelengths SampledWavelengths::sample_uniform(float u, float lambda_min, float lambda_max) {
     SampledWavelengths s;
     const float range = lambda_max - lambda_min;
@@ -45,6 +58,12 @@ SampledWavelengths SampledWavelengths::sample_uniform(float u, float lambda_min,
 
 SampledWavelengths SampledWavelengths::sample_single(float u) {
     SampledWavelengths s = sample_visible(u);
+    s.terminate_secondary();
+    return s;
+}
+
+SampledWavelengths SampledWavelengths::sample_single(const WavelengthDensity &density, float u) {
+    SampledWavelengths s = sample(density, u);
     s.terminate_secondary();
     return s;
 }

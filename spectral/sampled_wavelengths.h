@@ -31,15 +31,20 @@ inline constexpr float LambdaMin = 360.f, LambdaMax = 830.f;
 float visible_wavelengths_pdf(float lambda);
 float sample_visible_wavelengths(float u);
 
+class WavelengthDensity;
+
 class SampledWavelengths {
   public:
     // Hero from the visible density, the rest rotated in sample space; the default.
     static SampledWavelengths sample_visible(float u);
+    // The same rotations in sample space of another density (a scene's, wavelength_density.h).
+    static SampledWavelengths sample(const WavelengthDensity &density, float u);
     // Hero uniform over [lambda_min, lambda_max], the others at equal steps after it (wrapped
     // around the range). A spectral film samples its own range this way, as pbrt-v4 does.
     static SampledWavelengths sample_uniform(float u, float lambda_min = LambdaMin, float lambda_max = LambdaMax);
     // Single-wavelength sampling (one wavelength per path, for comparisons with hero sampling).
     static SampledWavelengths sample_single(float u);
+    static SampledWavelengths sample_single(const WavelengthDensity &density, float u);
     // Every lane at one fixed wavelength with pdf 1: the `--wavelength NM` monochromatic mode.
     static SampledWavelengths fixed(float lambda);
 

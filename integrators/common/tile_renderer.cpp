@@ -24,6 +24,10 @@ SampledWavelengths sample_wavelengths(const Scene &scene, float u) {
         if (scene.overrides.single_wavelength) lambda.terminate_secondary();
         return lambda;
     }
+    if (scene.wavelength_density) {
+        return scene.overrides.single_wavelength ? SampledWavelengths::sample_single(*scene.wavelength_density, u)
+                                                 : SampledWavelengths::sample(*scene.wavelength_density, u);
+    }
     if (scene.overrides.single_wavelength) return SampledWavelengths::sample_single(u);
     return SampledWavelengths::sample_visible(u);
 }

@@ -20,7 +20,9 @@ using RadianceFunction = std::function<SampledSpectrum(const CameraRay &ray, Sam
                                                        Sampler &sampler, ScratchBuffer &scratch,
                                                        uint64_t &rays)>;
 
-// Samples the path's wavelengths as the scene's overrides ask (hero, single, or fixed).
+// Samples the path's wavelengths as the scene's overrides ask (hero, single, or fixed): from the
+// scene's wavelength density, fitted to its lights (spectral/wavelength_density.h), or from a
+// spectral film's own range.
 SampledWavelengths sample_wavelengths(const Scene &scene, float u);
 
 // What the work for one (pixel, sample index) may use: the thread's sampler, already started at

@@ -3,7 +3,7 @@
 //
 // Dimension layout (what the n-th request after start_pixel_sample returns), shared by every
 // sampler and by every integrator that renders from the camera:
-//   dimension 0      get_1d()        hero wavelength (SampledWavelengths::sample_visible)
+//   dimension 0      get_1d()        hero wavelength (sample_wavelengths, tile_renderer.h)
 //   dimensions 1-2   get_pixel_2d()  position within the pixel (through the filter's sampler)
 //   dimensions 3-4   get_2d()        lens position (thin-lens depth of field)
 //   dimension 5      get_1d()        the time within the shutter, only when geometry moves

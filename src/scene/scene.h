@@ -15,8 +15,10 @@
 #include "media/medium_interface.h"
 #include "params/parameters.h"
 #include "sampler/sampler.h"
+#include "spectral/wavelength_density.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -102,6 +104,9 @@ class Scene {
     // > 0: every path is traced at this wavelength (nm), the achromatic scene's (see
     // SceneFeatures::achromatic) where its lights' colour is largest; 0: wavelengths are sampled.
     float achromatic_wavelength = 0;
+    // The density sampled wavelengths are drawn from: fitted to the lights' and emissive media's
+    // spectral power (spectral/wavelength_density.h); a spectral film samples its own range.
+    std::optional<WavelengthDensity> wavelength_density;
 
     // Scene statistics for `caustica info`.
     size_t shape_count = 0, triangle_count = 0, material_count = 0, medium_count = 0,

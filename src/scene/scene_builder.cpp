@@ -7,6 +7,7 @@
 #include "lights/light.h"
 #include "lights/light_factory.h"
 #include "lights/medium_emitter.h"
+#include "lights/spectral_power.h"
 #include "materials/material_factory.h"
 #include "media/medium.h"
 #include "media/medium_factory.h"
@@ -453,6 +454,10 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     scene->light_sampler = std::make_unique<SpatialLightSampler>(scene->lights);
     add_medium_emitters(bounds, *scene);
     analyse_features(d, *scene);
+    std::vector<const Light *> emitters;
+    for (const std::vector<LightPtr> *list : {&scene->lights, &scene->medium_emitters})
+        for (const LightPtr &light : *list) emitters.push_back(light.get());
+    scene->wavelength_density.emplace(EmittedSpectralPower(emitters));
     const Spectrum *colour = achromatic_colour(*scene);
     scene->features.achromatic = colour != nullptr;
     // Overrides that ask for wavelengths (monochromatic, single or sampled) come first.

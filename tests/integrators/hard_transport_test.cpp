@@ -80,21 +80,6 @@ TEST_P(HardTransport, MatchesPbrtV4) {
 //   fails (|z| 6, measured with 4096 samples); the other integrators' is higher. Not explained
 //   yet: the filter is pbrt-v4's, and a full sphere in place of the two caps shows no such
 //   block (same test, single 4096-sample renders);
-// - sppm, bpm and vcm on narrow-line: each wavelength group traces all its pixels at one set of
-//   wavelengths per iteration, so a light emitting in 8 nm is seen by few groups and the whole
-//   image's error is correlated (issue 19, spiky spectra in the photon integrators); and pt on
-//   narrow-line: the lamp is in view, and pt draws one set of wavelengths per camera sample, of
-//   which about one in eight falls in the 8 nm line, so the lamp's pixels are a lottery (per-pixel
-//   variance of the mean 1800 times bdpt's at 64 spp, and the image mean 5% apart between two
-//   seeds), while bdpt's light-tracing strategy splats every light path's first vertex onto
-//   them, thousands per sample pass;
-// - sppm on near-specular-glass: the floor seen through the ball holds its dispersed caustic,
-//   which photon gathering blurs by the merge radius. Two blocks there (x 16-47, y 32-47) stay 1%
-//   to 2% above pbrt-v4 (and above bdpt and pt, which agree with it within 0.4%) at 4096 and at
-//   16384 iterations, and the next row below 0.4% to 0.7% under: the kernel's bias, which the
-//   shrinking radius removes only slowly. It was there before the rough glass kept its four
-//   wavelengths (the block 0.606 against 0.592 at 4096 iterations, two seeds); keeping them
-//   lowered sppm's noise until the block's |z| reached 5;
 // - pt, lt and sppm on coated-low-roughness, whose near-specular coat (alpha 0.01) mirrors the
 //   small light onto the wall and the wall into the floor: pt finds that caustic only when a
 //   bounce off the wall happens to reflect into the light, and lt and sppm meet the coat's spike
