@@ -42,8 +42,18 @@ BSDF DielectricMaterial::get_bsdf(const SurfaceInteraction &si, const SampledWav
 
 BSDF ThinDielectricMaterial::get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                                       ScratchBuffer &scratch) const {
-    auto *bxdf = scratch.make<ThinDielectricBxDF>(eta_->sample(lambda));
+    const float thickness = film_thickness_ ? std::max(film_thickness_->evaluate(TextureEvalContext(si)), 0.f) : 0.f;
+    SampledSpectrum wavelengths;
+    for (int i = 0; i < NumWavelengths; ++i) wavelengths[i] = lambda[i];
+    auto *bxdf = scratch.make<ThinDielectricBxDF>(eta_->sample(lambda), thickness, wavelengths);
     return BSDF(si.shading.n, si.shading.dpdu, bxdf);
+}
+
+bool ThinDielectricMaterial::is_wavelength_independent() const {
+    if (!is_flat(*eta_)) return false;
+    if (!film_thickness_) return true;
+    const float *constant = film_thickness_->constant_value();
+    return constant && *constant == 0;
 }
 
 } // namespace caustica

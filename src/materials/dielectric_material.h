@@ -57,18 +57,22 @@ class DielectricMaterial final : public Material {
 };
 
 // A thin slab (see thin_dielectric_bxdf.h). Its exit directions do not depend on wavelength,
-// so it is never dispersive even with a spectral eta; both lobes are always specular.
+// so it is never dispersive even with a spectral eta; both lobes are always specular. With a
+// film thickness (nm, a texture; 0 is none) the slab is a coherent film of index eta: a soap
+// bubble's wall.
 class ThinDielectricMaterial final : public Material {
   public:
-    explicit ThinDielectricMaterial(SpectrumPtr eta) : eta_(std::move(eta)) {}
+    ThinDielectricMaterial(SpectrumPtr eta, FloatTexturePtr film_thickness)
+        : eta_(std::move(eta)), film_thickness_(std::move(film_thickness)) {}
     BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                   ScratchBuffer &scratch) const override;
     bool has_specular_lobe() const override { return true; }
     bool has_non_specular_lobe() const override { return false; }
-    bool is_wavelength_independent() const override { return is_flat(*eta_); }
+    bool is_wavelength_independent() const override;
 
   private:
     SpectrumPtr eta_;
+    FloatTexturePtr film_thickness_;
 };
 
 // Smallest and largest value of a spectrum at the integer wavelengths of [LambdaMin, LambdaMax]

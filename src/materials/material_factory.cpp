@@ -164,6 +164,17 @@ ConductorIndex read_conductor_index(const ParameterDictionary &params, const Nam
     return c;
 }
 
+// A thin dielectric's "filmthickness" (nm): the slab itself is the film, of the slab's index, so
+// a separate "filmeta" would contradict "eta".
+FloatTexturePtr read_slab_film(const ParameterDictionary &params, const NamedTextures &textures) {
+    if (params.has("filmeta"))
+        throw InputError(params.location("filmeta"),
+                         "a thindielectric film is the slab itself: its index is \"eta\", not \"filmeta\"");
+    FloatTexturePtr thickness = params.get_float_texture_or_null("filmthickness", textures);
+    if (thickness) check_non_negative_texture(params, "filmthickness", thickness);
+    return thickness;
+}
+
 // An interference film: "filmthickness" (nm) and "filmeta".
 FilmLayer read_film(const ParameterDictionary &params, const NamedTextures &textures) {
     FilmLayer film;
@@ -417,7 +428,7 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
     } else if (type == "measured") {
         material = create_measured(params);
     } else if (type == "thindielectric") {
-        material = std::make_shared<ThinDielectricMaterial>(read_ior(params));
+        material = std::make_shared<ThinDielectricMaterial>(read_ior(params), read_slab_film(params, textures));
     } else if (type == "subsurface") {
         material = create_subsurface(params, textures);
     } else {

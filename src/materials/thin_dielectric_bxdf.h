@@ -4,6 +4,11 @@
 // internal bounces with single-interface reflectance R gives total reflectance
 // R' = R + T^2 R / (1 - R^2) and transmittance T' = 1 - R' (no absorption).
 //
+// A slab thinner than light's coherence length (a soap film, a few hundred nanometres) is a thin
+// film instead (Caustica's "filmthickness" on `thindielectric`): its internal reflections add as
+// amplitudes, not as intensities, and the Airy summation of thin_film.h, with air on both sides,
+// gives R' per wavelength and angle; T' = 1 - R' again. This is what colours soap bubbles.
+//
 // Both exit directions are the same for every wavelength, so a dispersive eta only changes the
 // per-wavelength weights and never sets BSDFSample::dispersive. The light leaves into the medium
 // it came from, so there is no radiance compression and the two transport modes agree.
@@ -11,12 +16,16 @@
 
 #include "materials/bxdf.h"
 #include "materials/fresnel.h"
+#include "materials/thin_film.h"
 
 namespace caustica {
 
 class ThinDielectricBxDF final : public BxDF {
   public:
-    explicit ThinDielectricBxDF(const SampledSpectrum &eta) : eta_(eta) {}
+    // film_thickness_nm > 0: the slab is a coherent film that thick, at the wavelengths lambda.
+    explicit ThinDielectricBxDF(const SampledSpectrum &eta, float film_thickness_nm = 0,
+                                const SampledSpectrum &lambda = {})
+        : eta_(eta), lambda_(lambda), film_thickness_nm_(film_thickness_nm) {}
 
     SampledSpectrum f(Vec3f, Vec3f, TransportMode) const override { return {}; }
     float pdf(Vec3f, Vec3f, TransportMode, SampleFlags = SampleFlags::All) const override { return 0; }
@@ -25,6 +34,11 @@ class ThinDielectricBxDF final : public BxDF {
     // Total reflectance of the slab per wavelength for light with cosine cos_o.
     SampledSpectrum reflectance(float cos_o) const {
         SampledSpectrum r;
+        if (film_thickness_nm_ > 0) {
+            for (int i = 0; i < NumWavelengths; ++i)
+                r[i] = thin_film_response(std::abs(cos_o), eta_[i], 1, film_thickness_nm_, lambda_[i]).reflectance;
+            return r;
+        }
         for (int i = 0; i < NumWavelengths; ++i) {
             float single = fresnel_dielectric(std::abs(cos_o), eta_[i]);
             float t = 1 - single;
@@ -60,7 +74,8 @@ class ThinDielectricBxDF final : public BxDF {
     }
 
   private:
-    SampledSpectrum eta_;
+    SampledSpectrum eta_, lambda_;
+    float film_thickness_nm_;
 };
 
 } // namespace caustica

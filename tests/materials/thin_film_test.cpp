@@ -5,6 +5,7 @@
 #include "materials/conductor_bxdf.h"
 #include "materials/dielectric_bxdf.h"
 #include "materials/fresnel.h"
+#include "materials/thin_dielectric_bxdf.h"
 #include "materials/thin_film.h"
 
 #include <gtest/gtest.h>
@@ -137,6 +138,50 @@ TEST(ThinFilm, DielectricBxDFWithAFilm) {
     auto r = bare.sample_f(normalize(Vec3f(0.6f, 0.1f, 0.5f)), 0, {0.5f, 0.5f}, TransportMode::Radiance);
     ASSERT_TRUE(r);
     EXPECT_NEAR(r->f[0] * r->wi.z, fresnel_dielectric(r->wi.z, eta), 1e-6f);
+}
+
+// A soap bubble's wall: a thin dielectric slab that is a coherent film (filmthickness). At any
+// angle, Airy's symmetric-film formula R = F sin^2(delta) / (1 + F sin^2(delta)), with
+// F = 4 R1 / (1 - R1)^2, R1 the single-surface reflectance for one polarisation and delta the
+// half round-trip phase 2 pi n d cos(theta_f) / lambda, averaged over s and p (Born and Wolf
+// 7.6.1). Half-wave walls vanish, every wavelength reflects its own share, the rest is
+// transmitted straight on, and thickness 0 is the incoherent slab.
+TEST(ThinFilm, SoapBubbleWall) {
+    const SampledSpectrum lambda(420, 510, 600, 690), eta(1.33f);
+    const float d = 380;
+    const ThinDielectricBxDF wall(eta, d, lambda);
+    for (float cos_o : {1.f, 0.8f, 0.4f, 0.1f}) {
+        const SampledSpectrum r = wall.reflectance(cos_o);
+        const float sin_o2 = 1 - cos_o * cos_o, cos_f = std::sqrt(1 - sin_o2 / (1.33f * 1.33f));
+        for (int i = 0; i < NumWavelengths; ++i) {
+            // Single-surface amplitude reflectances, s and p (Fresnel).
+            const float rs = (cos_o - 1.33f * cos_f) / (cos_o + 1.33f * cos_f);
+            const float rp = (1.33f * cos_o - cos_f) / (1.33f * cos_o + cos_f);
+            const float delta = 2 * Pi * 1.33f * d * cos_f / lambda[i];
+            auto airy = [&](float r1) {
+                const float f = 4 * r1 * r1 / ((1 - r1 * r1) * (1 - r1 * r1));
+                return f * std::sin(delta) * std::sin(delta) / (1 + f * std::sin(delta) * std::sin(delta));
+            };
+            EXPECT_NEAR(r[i], (airy(rs) + airy(rp)) / 2, 2e-5f) << "cos " << cos_o << " lambda " << lambda[i];
+        }
+    }
+    // Half-wave at normal incidence: 2 n d = lambda.
+    const ThinDielectricBxDF half_wave(eta, 510 / (2 * 1.33f), lambda);
+    EXPECT_NEAR(half_wave.reflectance(1)[1], 0, 1e-6f);
+    // Sampling: reflection or straight through, R' and T' = 1 - R' per lane, in both modes.
+    for (TransportMode mode : {TransportMode::Radiance, TransportMode::Importance})
+        for (float uc : {0.01f, 0.99f}) {
+            const Vec3f wo = normalize(Vec3f(0.3f, 0.2f, 0.7f));
+            const auto s = wall.sample_f(wo, uc, {}, mode);
+            ASSERT_TRUE(s);
+            const SampledSpectrum expected =
+                s->is_reflection() ? wall.reflectance(wo.z) : SampledSpectrum(1) - wall.reflectance(wo.z);
+            for (int i = 0; i < NumWavelengths; ++i) EXPECT_NEAR(s->f[i] * wo.z, expected[i], 1e-6f);
+            EXPECT_EQ(s->wi, s->is_reflection() ? Vec3f(-wo.x, -wo.y, wo.z) : -wo);
+        }
+    // No film: pbrt-v4's incoherent sum R + T^2 R / (1 - R^2).
+    const float r1 = fresnel_dielectric(1, 1.33f);
+    EXPECT_NEAR(ThinDielectricBxDF(eta).reflectance(1)[0], r1 + (1 - r1) * (1 - r1) * r1 / (1 - r1 * r1), 1e-6f);
 }
 
 } // namespace
