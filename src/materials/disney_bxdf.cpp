@@ -63,6 +63,7 @@ float DisneyBxDF::gtr1(Vec3f wm, float alpha) {
 
 DisneyBxDF::DisneyBxDF(const DisneyParameters &p)
     : eta_(p.eta),
+      film_(p.film),
       metallic_weight_(p.metallic),
       dielectric_weight_((1 - p.metallic) * (1 - p.spec_trans)),
       specular_bsdf_weight_((1 - p.metallic) * p.spec_trans),
@@ -80,13 +81,18 @@ DisneyBxDF::DisneyBxDF(const DisneyParameters &p)
       thin_transmission_(specular_distribution(thin_transmission_roughness(p.roughness, p.reference_eta),
                                                p.anisotropic)),
       clearcoat_masking_(ClearcoatMaskingAlpha, ClearcoatMaskingAlpha),
-      specular_bsdf_(p.eta, specular_) {
+      specular_bsdf_(p.eta, specular_, p.film) {
     SampledSpectrum tint(1.f);
     for (int i = 0; i < NumWavelengths; ++i) {
         base_color_[i] = clamp(p.base_color[i], 0.f, 1.f);
         if (p.base_luminance > 0) tint[i] = base_color_[i] / p.base_luminance;
     }
     sqrt_base_color_ = sqrt(base_color_);
+    // Inverting F0 = ((n - 1) / (n + 1))^2; a white metal's n is kept finite.
+    for (int i = 0; i < NumWavelengths; ++i) {
+        const float r = std::min(std::sqrt(base_color_[i]), 0.999f);
+        metal_eta_[i] = (1 + r) / (1 - r);
+    }
     sheen_color_ = lerp(p.sheen_tint, SampledSpectrum(1.f), tint);
     for (int i = 0; i < NumWavelengths; ++i)
         tinted_f0_[i] = clamp(normal_incidence_reflectance(eta_[i]) * tint[i], 0.f, 1.f);
@@ -131,19 +137,24 @@ BxDFFlags DisneyBxDF::flags() const {
 
 SampledSpectrum DisneyBxDF::dielectric_reflectance(float cos_d) const {
     SampledSpectrum r;
-    for (int i = 0; i < NumWavelengths; ++i) r[i] = fresnel_dielectric(cos_d, eta_[i]);
+    for (int i = 0; i < NumWavelengths; ++i)
+        r[i] = film_.present() ? film_.over_dielectric(cos_d, eta_[i], i) : fresnel_dielectric(cos_d, eta_[i]);
     return r;
 }
 
 SampledSpectrum DisneyBxDF::specular_reflectance(float cos_d) const {
     SampledSpectrum r;
-    if (metallic_weight_ > 0) r += fresnel_schlick(base_color_, cos_d) * metallic_weight_;
-    if (dielectric_weight_ > 0)
+    if (metallic_weight_ > 0)
+        r += (film_.present() ? film_.over_conductor(cos_d, metal_eta_, SampledSpectrum(0.f))
+                              : fresnel_schlick(base_color_, cos_d)) *
+             metallic_weight_;
+    if (dielectric_weight_ > 0) {
+        const SampledSpectrum exact = dielectric_reflectance(cos_d);
         for (int i = 0; i < NumWavelengths; ++i) {
-            float exact = fresnel_dielectric(cos_d, eta_[i]);
             float tinted = fresnel_schlick_critical(tinted_f0_[i], cos_d, eta_[i]);
-            r[i] += dielectric_weight_ * lerp(specular_tint_, exact, tinted);
+            r[i] += dielectric_weight_ * lerp(specular_tint_, exact[i], tinted);
         }
+    }
     // A thin surface's specular BSDF reflects through this lobe (solids use specular_bsdf_).
     if (thin_ && specular_bsdf_weight_ > 0) r += dielectric_reflectance(cos_d) * specular_bsdf_weight_;
     return r;

@@ -101,6 +101,11 @@ struct DisneyParameters {
     // transmission roughness scale. DisneyMaterial uses the index at the helium d line.
     float reference_eta = 1.5f;
     bool thin = false;
+    // An interference film on the specular lobes (absent by default; thin_film.h). Over the
+    // dielectric it replaces the interface's Fresnel reflectance, on the specular BSDF too; over
+    // the metallic lobe, whose Schlick colour has no complex index, it lies on the real index
+    // that reflects base_color at normal incidence.
+    ThinFilm film;
     float diff_trans = 0;  // [0, 2], thin surfaces only
     float flatness = 0;    // [0, 1], thin surfaces only
     bool subsurface = false; // solids only: subsurface scattering (see above)
@@ -169,10 +174,14 @@ class DisneyBxDF final : public BxDF {
     float clearcoat_f(Vec3f wo, Vec3f wi, bool coated) const;
     // Fresnel factor of the reflection lobe for cosine cos_d between wo and the microfacet.
     SampledSpectrum specular_reflectance(float cos_d) const;
-    // Exact dielectric reflectance of each wavelength for cos_d (light from outside).
+    // Exact dielectric reflectance of each wavelength for cos_d (light from outside), under the
+    // film if there is one.
     SampledSpectrum dielectric_reflectance(float cos_d) const;
 
     SampledSpectrum base_color_, sqrt_base_color_, sheen_color_, tinted_f0_, eta_;
+    ThinFilm film_;
+    // With a film: the real index whose normal-incidence reflectance is base_color, per lane.
+    SampledSpectrum metal_eta_;
     float metallic_weight_, dielectric_weight_, specular_bsdf_weight_, sheen_weight_;
     float roughness_, specular_tint_, clearcoat_, clearcoat_alpha_;
     bool thin_, subsurface_, profile_subsurface_;

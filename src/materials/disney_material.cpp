@@ -226,6 +226,7 @@ DisneyParameters DisneyMaterial::parameters(const TextureEvalContext &ctx, const
     p.spec_trans = evaluate_clamped(textures_.spec_trans, ctx, 0, 1);
     p.eta = eta_->sample(lambda);
     p.reference_eta = reference_eta_;
+    p.film = textures_.film.at(ctx, lambda);
     p.thin = thin_;
     p.subsurface = subsurface_.enabled;
     p.profile_subsurface = has_profile_subsurface();
@@ -243,7 +244,8 @@ DisneyParameters DisneyMaterial::parameters(const TextureEvalContext &ctx, const
 }
 
 bool DisneyMaterial::is_wavelength_independent() const {
-    if (!textures_.base_color->is_wavelength_independent() || !is_flat(*eta_) || (sigma_a_ && !is_flat(*sigma_a_)))
+    if (!textures_.base_color->is_wavelength_independent() || !is_flat(*eta_) || (sigma_a_ && !is_flat(*sigma_a_)) ||
+        textures_.film.may_be_present())
         return false;
     if (!subsurface_.enabled) return true;
     const DisneySubsurface &s = subsurface_;
@@ -395,8 +397,9 @@ DisneySubsurface read_subsurface(const ParameterDictionary &params, const NamedT
 } // namespace
 
 MaterialPtr create_disney_material(const ParameterDictionary &params, const NamedTextures &textures,
-                                   SpectrumPtr eta, SpectrumPtr interior_sigma_a) {
+                                   SpectrumPtr eta, SpectrumPtr interior_sigma_a, FilmLayer film) {
     DisneyTextures t;
+    t.film = std::move(film);
     t.base_color = params.get_spectrum_texture("baseColor", std::make_shared<ConstantSpectrum>(0.5f),
                                                SpectrumType::Albedo, textures);
     t.metallic = read_float(params, textures, "metallic", 0, 0, 1);

@@ -33,6 +33,7 @@
 #include "materials/disney_bxdf.h"
 #include "materials/photon_beam_diffusion.h"
 #include "materials/profile_subsurface_material.h"
+#include "materials/thin_film.h"
 #include "materials/normalized_diffusion.h"
 #include "media/medium.h"
 #include "spectral/spectrum.h"
@@ -51,6 +52,8 @@ struct DisneyTextures {
         clearcoat_gloss, spec_trans;
     // Thin surfaces only (null for solids).
     FloatTexturePtr diff_trans, flatness;
+    // Caustica's interference film ("filmthickness", "filmeta") on the specular lobes.
+    FilmLayer film;
 };
 
 enum class SubsurfaceModel { RandomWalk, Diffusion, Dipole, BeamDiffusion };
@@ -179,9 +182,9 @@ MediumPtr create_random_walk_medium(SpectrumPtr albedo, SpectrumPtr scatter_dist
 
 // Reads the "disney" parameters (see docs/disney.md). The index of refraction and the interior
 // absorption are read by the material factory, as for "dielectric" (so "eta" may be a float, a
-// named glass or any spectrum, or Sellmeier/Cauchy coefficients). Throws InputError at a
-// parameter whose constant value is out of range.
+// named glass or any spectrum, or Sellmeier/Cauchy coefficients), and so is the film. Throws
+// InputError at a parameter whose constant value is out of range.
 MaterialPtr create_disney_material(const ParameterDictionary &params, const NamedTextures &textures,
-                                   SpectrumPtr eta, SpectrumPtr interior_sigma_a);
+                                   SpectrumPtr eta, SpectrumPtr interior_sigma_a, FilmLayer film);
 
 } // namespace caustica

@@ -422,7 +422,8 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         material = std::make_shared<DielectricMaterial>(eta, roughness, read_interior_absorption(params),
                                                         read_film(params, textures));
     } else if (type == "disney") {
-        material = create_disney_material(params, textures, read_ior(params), read_interior_absorption(params));
+        material = create_disney_material(params, textures, read_ior(params), read_interior_absorption(params),
+                                          read_film(params, textures));
     } else if (type == "hair") {
         material = create_hair(params, textures, loc);
     } else if (type == "measured") {

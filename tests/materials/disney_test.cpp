@@ -296,6 +296,61 @@ TEST(DisneyBxDF, RoughDispersiveGlassSamplesAsOneLane) {
     EXPECT_FALSE(DisneyBxDF(p).has_lane_lobes());
 }
 
+TEST(DisneyBxDF, FilmOnTheSpecularLobes) {
+    // Over the dielectric, the film's reflectance takes the place of Fresnel's: on a black,
+    // untinted dielectric the reflection lobe is that reflectance times the microfacet terms, so
+    // f with a film over f without is R_film / R_fresnel at the half vector, per wavelength.
+    ThinFilm film;
+    film.thickness_nm = 420;
+    film.eta = SampledSpectrum(1.38f);
+    film.lambda = SampledSpectrum(430, 520, 610, 700);
+    DisneyParameters plain;
+    plain.base_color = SampledSpectrum(0.f), plain.base_luminance = 0;
+    plain.roughness = 0.4f, plain.eta = SampledSpectrum(1.5f);
+    DisneyParameters coated = plain;
+    coated.film = film;
+    const DisneyBxDF without(plain), with(coated);
+    Rng rng(21, 4);
+    for (int k = 0; k < 200; ++k) {
+        Vec3f wo = random_direction(rng), wi = random_direction(rng);
+        wo.z = std::abs(wo.z), wi.z = std::abs(wi.z);
+        const float cos_d = dot(wo, normalize(wo + wi));
+        const SampledSpectrum a = with.f(wo, wi, TransportMode::Radiance), b = without.f(wo, wi, TransportMode::Radiance);
+        for (int i = 0; i < NumWavelengths; ++i)
+            if (b[i] > 1e-6f)
+                expect_relative(a[i] / b[i], film.over_dielectric(cos_d, 1.5f, i) / fresnel_dielectric(cos_d, 1.5f),
+                                1e-4f, "film over the dielectric");
+    }
+    // Over the metal: an index-matched film (eta 1) leaves the real index that reflects
+    // base_color at normal incidence, as Schlick's F0 does.
+    DisneyParameters metal;
+    metal.base_color = SampledSpectrum(0.95f, 0.64f, 0.54f, 0.3f), metal.base_luminance = 0.7f;
+    metal.metallic = 1, metal.roughness = 0.3f;
+    DisneyParameters tinted = metal;
+    tinted.film = film;
+    tinted.film.eta = SampledSpectrum(1.f);
+    const Vec3f up(0, 0, 1);
+    const SampledSpectrum a = DisneyBxDF(tinted).f(up, up, TransportMode::Radiance);
+    const SampledSpectrum b = DisneyBxDF(metal).f(up, up, TransportMode::Radiance);
+    for (int i = 0; i < NumWavelengths; ++i) expect_relative(a[i], b[i], 1e-4f, "index-matched film on metal");
+    // A film conserves energy: the albedo of a filmed metal and of a filmed glass stays at most 1.
+    tinted.film.eta = SampledSpectrum(2.2f);
+    DisneyParameters glass = plain;
+    glass.spec_trans = 1, glass.film = film;
+    for (const DisneyParameters &p : {tinted, glass}) {
+        const DisneyBxDF b(p);
+        for (float theta : {10.f, 60.f, 85.f}) {
+            const Vec3f wo = direction_at(theta);
+            SampledSpectrum sum;
+            constexpr int N = 20000;
+            for (int n = 0; n < N; ++n)
+                if (auto s = b.sample_f(wo, rng.uniform(), rng.uniform2(), TransportMode::Importance))
+                    sum += s->f * (std::abs(s->wi.z) / s->pdf);
+            for (int i = 0; i < NumWavelengths; ++i) EXPECT_LE(sum[i] / N, 1.02f) << theta;
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Numerical integration over directions, independent of the BxDF's sampling.
 
