@@ -16,30 +16,29 @@ float sample_visible_wavelengths(float u) {
     return 538 - 138.888889f * std::atanh(0.85691062f - 1.82750197f * u);
 }
 
-SampledWavelengths SampledWavelengths::sample_visible(float u) {
+template <typename InverseCdf, typename Pdf>
+SampledWavelengths SampledWavelengths::rotations(float u, const InverseCdf &inverse_cdf, const Pdf &pdf) {
     SampledWavelengths s;
-    // Rotations of the primary sample u (see header): member i is the visible density's inverse
-    // CDF at u + i/n, so each member has the visible density itself as its combined pdf.
+    // Rotations of the primary sample u (see header): member i is the density's inverse CDF at
+    // u + i/n, so each member has the density itself as its combined pdf.
     for (int i = 0; i < NumWavelengths; ++i) {
         float rotated = u + float(i) / NumWavelengths;
         if (rotated >= 1) rotated -= 1;
-        s.lambda_[i] = clamp(sample_visible_wavelengths(rotated), LambdaMin, LambdaMax);
-        s.pdf_[i] = visible_wavelengths_pdf(s.lambda_[i]);
+        s.lambda_[i] = inverse_cdf(rotated);
+        s.pdf_[i] = pdf(s.lambda_[i]);
     }
     s.hero_pdf_ = s.pdf_[0];
     return s;
 }
 
+SampledWavelengths SampledWavelengths::sample_visible(float u) {
+    return rotations(
+        u, [](float v) { return clamp(sample_visible_wavelengths(v), LambdaMin, LambdaMax); }, visible_wavelengths_pdf);
+}
+
 SampledWavelengths SampledWavelengths::sample(const WavelengthDensity &density, float u) {
-    SampledWavelengths s;
-    for (int i = 0; i < NumWavelengths; ++i) {
-        float rotated = u + float(i) / NumWavelengths;
-        if (rotated >= 1) rotated -= 1;
-        s.lambda_[i] = density.sample(rotated);
-        s.pdf_[i] = density.pdf(s.lambda_[i]);
-    }
-    s.hero_pdf_ = s.pdf_[0];
-    return s;
+    return rotations(
+        u, [&](float v) { return density.sample(v); }, [&](float lambda) { return density.pdf(lambda); });
 }
 
 SampledWavelengths SampledWavelengths::sample_uniform(float u, float lambda_min, float lambda_max) {

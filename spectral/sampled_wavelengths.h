@@ -57,6 +57,10 @@ class SampledWavelengths {
     bool secondary_terminated() const;
 
   private:
+    // Member i at inverse_cdf(u + i/n mod 1), with its density pdf.
+    template <typename InverseCdf, typename Pdf>
+    static SampledWavelengths rotations(float u, const InverseCdf &inverse_cdf, const Pdf &pdf);
+
     SampledSpectrum lambda_, pdf_;
     float hero_pdf_ = 0;  // density of the hero alone, used once secondaries are terminated
 };

@@ -163,14 +163,8 @@ std::optional<BSDFSample> DielectricBxDF::sample_rough(Vec3f wo, float uc, Vec2f
         s.pdf = distribution_.reflection_pdf(wo, wm) * lobes.reflection_probability();
         s.flags = BxDFGlossyReflection;
         if (lane_lobes_) {
-            // Every lane reflects off the sampled facet, each choosing reflection with its own
-            // Fresnel term.
-            SampledSpectrum p;
-            for (int i = 0; i < NumWavelengths; ++i)
-                p[i] = distribution_.reflection_pdf(wo, wm) *
-                       choose_lobes(lane_reflectance(wo_dot_m, i), flags).reflection_probability();
-            s.lane_pdf = p;
-            s.pdf = p[lane];
+            s.lane_pdf = reflection_lane_pdfs(wo, wm, flags);
+            s.pdf = (*s.lane_pdf)[lane];
         }
         return s;
     }
@@ -264,8 +258,24 @@ float DielectricBxDF::pdf(Vec3f wo, Vec3f wi, TransportMode, SampleFlags flags) 
 }
 
 SampledSpectrum DielectricBxDF::lane_pdfs(Vec3f wo, Vec3f wi, SampleFlags flags) const {
+    if (wo.z * wi.z > 0) {
+        // One half vector for every lane.
+        Vec3f wm = wi + wo;
+        if (length_squared(wm) == 0) return {};
+        return reflection_lane_pdfs(wo, face_forward(normalize(wm), Vec3f(0, 0, 1)), flags);
+    }
     SampledSpectrum p;
     for (int i = 0; i < NumWavelengths; ++i) p[i] = lane_pdf(wo, wi, i, flags);
+    return p;
+}
+
+SampledSpectrum DielectricBxDF::reflection_lane_pdfs(Vec3f wo, Vec3f wm, SampleFlags flags) const {
+    const float facet = distribution_.reflection_pdf(wo, wm), wo_dot_m = dot(wo, wm);
+    SampledSpectrum p;
+    for (int i = 0; i < NumWavelengths; ++i) {
+        const LobeChoice lobes = choose_lobes(choice_reflectance(wo_dot_m, i), flags);
+        if (lobes.pr > 0) p[i] = facet * lobes.reflection_probability();
+    }
     return p;
 }
 

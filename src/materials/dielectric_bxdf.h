@@ -102,6 +102,9 @@ class DielectricBxDF final : public BxDF {
                                            int lane) const;
     // The density with which sample_rough(..., lane) returns wi.
     float lane_pdf(Vec3f wo, Vec3f wi, int lane, SampleFlags flags) const;
+    // Every lane's density of reflecting off facet wm: the facet's visible-normal density times
+    // the lane's probability of choosing reflection there.
+    SampledSpectrum reflection_lane_pdfs(Vec3f wo, Vec3f wm, SampleFlags flags) const;
     // Rough transmission value of wavelength `lane`.
     float rough_transmission(Vec3f wo, Vec3f wi, int lane, TransportMode mode) const;
     // Rough transmission of every lane when they share one index (no dispersion).
