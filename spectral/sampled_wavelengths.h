@@ -52,6 +52,11 @@ class SampledWavelengths {
     float lambda(int i) const { return lambda_[i]; }
     SampledSpectrum pdf() const { return pdf_; }
 
+    // Every lane now carries lambda, each keeping its density: a fluorescent re-radiation
+    // (materials/fluorophore.h) moved the light on every lane to one new wavelength, and the
+    // film still weighs each lane's estimate by the density of the wavelength it was drawn with.
+    void shift_to(float lambda) { lambda_ = SampledSpectrum(lambda); }
+
     // Keeps the hero only; no-op if already terminated.
     void terminate_secondary();
     bool secondary_terminated() const;

@@ -2,6 +2,7 @@
 
 #include "camera/camera_footprint.h"
 #include "integrators/common/profile_subsurface.h"
+#include "integrators/common/reradiation.h"
 #include "materials/material.h"
 #include "media/medium_interface.h"
 #include "sampler/sampler.h"
@@ -41,7 +42,7 @@ WalkEvent SubpathWalk::advance() {
         const bool hit = scene_.intersect(ray_, &si_);
         const float speed = length(ray_.d);
         const PathSegment segment = traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed, Infinity, ray_.time},
-                                                     hit ? si_.t * speed : Infinity, lambda_, sampler_, spectral_mis_);
+                                                     hit ? si_.t * speed : Infinity, lambda(), sampler_, spectral_mis_);
         if (mode_ == TransportMode::Radiance) emitted_ += beta * segment.emitted;
         beta *= segment.weight;
         if (beta.is_black()) return WalkEvent::Ended;
@@ -56,7 +57,7 @@ WalkEvent SubpathWalk::advance() {
             compute_differentials(si_, differential_ ? &*differential_ : nullptr,
                                   scene_.camera_footprint ? &*scene_.camera_footprint : nullptr,
                                   sampler_.samples_per_pixel());
-        const BSDF bsdf = si_.material ? shade(si_, lambda_, bsdf_memory_) : BSDF();
+        const BSDF bsdf = si_.material ? shade(si_, lambda(), bsdf_memory_) : BSDF();
         if (bsdf || si_.area_light) {
             point_ = ScatteringPoint::on_surface(si_, bsdf, medium_);
             return WalkEvent::Vertex;
@@ -96,15 +97,19 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
     const BSDF &bsdf = point_.bsdf;
     const Vec3f wo = si_.wo;
     // Lane lobes (rough dispersive refraction) are sampled with the subpath's spectral MIS lane.
-    const int lane = bsdf.has_lane_lobes() ? spectral_mis_.lane(lambda_, sampler_) : -1;
+    const int lane = bsdf.has_lane_lobes() ? spectral_mis_.lane(lambda(), sampler_) : -1;
     // A jump's exit leaves by its exit lobe, a single lobe: no lobe choice is drawn.
     const float u = after_jump_ ? 0.f : sampler_.get_1d();
+    // A fluorescent surface re-radiates for its share of u; the elastic lobe has the rest.
+    const Reradiation *reradiation = after_jump_ ? nullptr : bsdf.reradiation();
+    if (reradiation && u < reradiation->probability(mode_)) return reradiate(*reradiation, wo);
     const std::optional<BSDFSample> bs =
         lane < 0 ? bsdf.sample_f(wo, u, sampler_.get_2d(), mode_) : bsdf.sample_f_as(lane, wo, u, sampler_.get_2d(), mode_);
     if (!bs) return std::nullopt;
     // Hero-wavelength sampling (Wilkie et al. 2014): a direction that depends on wavelength is
     // valid for the hero alone; the other lanes end here, before the densities are evaluated.
-    if (bs->dispersive && !lambda_.secondary_terminated()) {
+    // Once a re-radiation has moved every lane to one wavelength, every lane may follow it.
+    if (bs->dispersive && !shifted_ && !lambda_.secondary_terminated()) {
         lambda_.terminate_secondary();
         for (int i = 1; i < NumWavelengths; ++i) beta[i] = 0;
     }
@@ -130,8 +135,30 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
     return s;
 }
 
+std::optional<WalkScatter> SubpathWalk::reradiate(const Reradiation &reradiation, Vec3f wo) {
+    const Vec2f u = sampler_.get_2d();
+    const ReradiationShift shift = sample_reradiation_shift(*reradiation.fluorophore, mode_, lambda(), sampler_.get_1d());
+    if (!shift) return std::nullopt;
+    const ReradiationBxDF lobe_storage(shift.albedo, reradiation);
+    const BSDF lobe(point_.bsdf.frame(), &lobe_storage);
+    const std::optional<BSDFSample> bs = lobe.sample_f(wo, 0.f, u, mode_);
+    if (!bs) return std::nullopt;
+    WalkScatter s;
+    s.wi = bs->wi;
+    s.pdf_fwd = bs->pdf;
+    if (reverse_densities_) s.pdf_rev = lobe.pdf(bs->wi, wo, adjoint(mode_));
+    s.cos_out = abs_dot(si_.n, bs->wi);
+    beta *= bs->f * (scattering_cosine(mode_, si_, wo, bs->wi) / bs->pdf);
+    if (mode_ == TransportMode::Importance) lambda_.shift_to(shift.lambda);
+    shifted_lambda_ = lambda_;
+    shifted_lambda_.shift_to(shift.lambda);
+    shifted_ = true;
+    leave(si_, bs->wi);
+    return s;
+}
+
 bool SubpathWalk::jump(const ProfileSubsurfaceMaterial &profile) {
-    std::optional<ProfileExit> exit = sample_profile_exit(scene_, profile, si_, lambda_, sampler_, bsdf_memory_, rays_);
+    std::optional<ProfileExit> exit = sample_profile_exit(scene_, profile, si_, lambda(), sampler_, bsdf_memory_, rays_);
     if (!exit) return false;
     beta *= exit->weight;
     if (beta.is_black()) return false;

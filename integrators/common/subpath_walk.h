@@ -13,6 +13,7 @@
 //     radiance (pbrt-v4 14.1);
 //   - dispersive termination of the secondary wavelengths (Wilkie et al. 2014; pbrt-v4's
 //     SampledWavelengths::TerminateSecondary);
+//   - fluorescent re-radiation, which moves the light to another wavelength (reradiation.h);
 //   - the jump through a profile-subsurface solid (profile_subsurface.h);
 //   - Russian roulette;
 //   - on camera subpaths, the emission of emissive media met along each segment (emitted()).
@@ -121,12 +122,22 @@ class SubpathWalk {
     // ends.
     bool russian_roulette(int depth);
 
+    // The wavelengths the path carries now: the caller's, until a re-radiation moves every lane
+    // to one new wavelength. For a light subpath the caller's set itself is moved (keeping each
+    // lane's density, SampledWavelengths::shift_to), so that its splats land at the new
+    // wavelength; a camera subpath leaves the caller's set, the film's, as it was, and lane j's
+    // throughput then holds what reaches the film's wavelength j from light at lambda().
+    const SampledWavelengths &lambda() const { return shifted_ ? shifted_lambda_ : lambda_; }
+    bool reradiated() const { return shifted_; }
+
     const Ray &ray() const { return ray_; }
     const Medium *medium() const { return medium_; }
     SampledSpectrum beta;
 
   private:
     void leave(const SurfaceInteraction &from, Vec3f wi);
+    // The re-radiated part of a fluorescent vertex's scattering, chosen by scatter().
+    std::optional<WalkScatter> reradiate(const Reradiation &reradiation, Vec3f wo);
 
     const Scene &scene_;
     TransportMode mode_;
@@ -148,6 +159,9 @@ class SubpathWalk {
     bool after_jump_ = false;
     // Product of eta^2 over the radiance-mode refractions (1 for importance).
     float eta_scale_ = 1;
+    // After a re-radiation, every lane carries one wavelength (lambda()).
+    bool shifted_ = false;
+    SampledWavelengths shifted_lambda_;
 };
 
 } // namespace caustica

@@ -5,6 +5,7 @@
 #include "integrators/common/camera_importance.h"
 #include "integrators/common/light_path_start.h"
 #include "integrators/common/subpath_walk.h"
+#include "integrators/common/reradiation.h"
 #include "integrators/common/splat_scale.h"
 #include "integrators/common/tile_renderer.h"
 #include "integrators/common/transmittance.h"
@@ -88,6 +89,22 @@ void connect_to_lens(const LightPathContext &ctx, const ScatteringPoint &point, 
     splat(ctx, cs->p_raster, L, lambda);
 }
 
+// The light a fluorescent light vertex re-radiates towards a sampled lens point: a new
+// wavelength drawn from the dye's emission (reradiation.h), splatted there.
+void connect_reradiated_to_lens(const LightPathContext &ctx, const ScatteringPoint &point,
+                                const SampledSpectrum &throughput, const SampledWavelengths &lambda) {
+    const Reradiation &reradiation = *point.bsdf.reradiation();
+    const ReradiationShift shift = sample_reradiation_shift(*reradiation.fluorophore, TransportMode::Importance, lambda,
+                                                            ctx.sample.sampler.get_1d());
+    if (!shift) return;
+    const ReradiationBxDF lobe(shift.albedo, reradiation);
+    ScatteringPoint emitter = point;
+    emitter.bsdf = BSDF(point.bsdf.frame(), &lobe);
+    SampledWavelengths emitted = lambda;
+    emitted.shift_to(shift.lambda);
+    connect_to_lens(ctx, emitter, throughput, emitted);
+}
+
 // One light path for the sampler's current (pixel, iteration).
 void trace_light_path(const LightPathContext &ctx) {
     const Scene &scene = ctx.scene;
@@ -126,8 +143,11 @@ void trace_light_path(const LightPathContext &ctx) {
         // sampled direction enters. Specular lobes have zero density towards any given
         // direction, so only non-specular vertices can contribute.
         while (true) {
-            if (point.in_medium() || is_non_specular(point.bsdf.flags()))
+            if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
                 connect_to_lens(ctx, point, start->flux * walk.beta, lambda);
+                if (!point.in_medium() && point.bsdf.reradiation())
+                    connect_reradiated_to_lens(ctx, point, start->flux * walk.beta, lambda);
+            }
             const std::optional<WalkScatter> s = walk.scatter();
             if (!s) return;
             if (!s->profile) break;

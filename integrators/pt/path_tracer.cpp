@@ -3,6 +3,7 @@
 #include "core/sampling.h"
 #include "geometry/interaction.h"
 #include "integrators/common/light_sampling.h"
+#include "integrators/common/reradiation.h"
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/tile_renderer.h"
 #include "scene/scene.h"
@@ -25,7 +26,9 @@ struct EmissionMIS {
 };
 
 // Radiance along a camera ray: next-event estimation at every non-specular vertex (surface or
-// medium), weighted against the walk's own hits on emitters by the power heuristic. Emissive
+// medium), weighted against the walk's own hits on emitters by the power heuristic. Emitters and
+// lights are evaluated at the wavelengths the walk carries (walk.lambda(): the film's, until a
+// fluorescent re-radiation moves them), while L stays on the film's. Emissive
 // media are not lights: their emission is what the walk collects (walk.emitted()).
 SampledSpectrum trace_path(const Scene &scene, int max_depth, const CameraRay &camera_ray, SampledWavelengths &lambda,
                            Sampler &sampler, ScratchBuffer &scratch, uint64_t &rays) {
@@ -49,13 +52,13 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, const CameraRay &c
         if (depth < max_depth) L += walk.emitted();
         if (event == WalkEvent::Ended) break;
         if (event == WalkEvent::Escaped) {
-            for (const Light *light : scene.infinite_lights) add_emission(*light, light->Le(walk.ray(), lambda), walk.ray().d);
+            for (const Light *light : scene.infinite_lights) add_emission(*light, light->Le(walk.ray(), walk.lambda()), walk.ray().d);
             break;
         }
         const ScatteringPoint &point = walk.vertex();
         if (!point.in_medium()) {
             const SurfaceInteraction &si = walk.hit();
-            if (si.area_light) add_emission(*si.area_light, si.area_light->L(si.p, si.n, si.uv, si.wo, lambda), walk.ray().d);
+            if (si.area_light) add_emission(*si.area_light, si.area_light->L(si.p, si.n, si.uv, si.wo, walk.lambda()), walk.ray().d);
             if (!point.bsdf) {
                 walk.pass_through();
                 continue;
@@ -66,17 +69,21 @@ SampledSpectrum trace_path(const Scene &scene, int max_depth, const CameraRay &c
         // the sampled direction enters (one scattering event, as for maxdepth).
         while (true) {
             if (point.in_medium()) {
-                L += walk.beta * sample_direct_lighting_in_medium(scene, point.p, point.time, point.wo, *point.medium, lambda,
+                L += walk.beta * sample_direct_lighting_in_medium(scene, point.p, point.time, point.wo, *point.medium, walk.lambda(),
                                                                  sampler, rays);
                 mis.prev_ctx = LightSampleContext{point.p, {}, {}};
             } else {
                 const SurfaceInteraction &si = walk.hit();
                 mis.prev_ctx = LightSampleContext{si.p, si.n, si.shading.n};
                 if (is_non_specular(point.bsdf.flags()))
-                    L += walk.beta * sample_direct_lighting(scene, si, point.bsdf, mis.prev_ctx, lambda, sampler, rays,
-                                                            TransportMode::Radiance,
+                    L += walk.beta * sample_direct_lighting(scene, si, point.bsdf, mis.prev_ctx, walk.lambda(), sampler,
+                                                            rays, TransportMode::Radiance,
                                                             DirectLighting::WeightedAgainstBsdfSampling,
                                                             walk.medium());
+                // A fluorescent surface also re-radiates light sampled at another wavelength.
+                if (point.bsdf.reradiation())
+                    L += walk.beta * sample_reradiated_lighting(scene, si, point.bsdf, mis.prev_ctx, walk.lambda(),
+                                                                sampler, rays, walk.medium());
             }
             const std::optional<WalkScatter> s = walk.scatter();
             if (!s) return L;

@@ -10,6 +10,8 @@ class BSDF {
   public:
     BSDF() = default;
     BSDF(Vec3f ns, Vec3f dpdus, const BxDF *bxdf) : frame_(Frame::from_xz(dpdus, ns)), bxdf_(bxdf) {}
+    // Another BxDF in the same shading frame.
+    BSDF(const Frame &frame, const BxDF *bxdf) : frame_(frame), bxdf_(bxdf) {}
 
     explicit operator bool() const { return bxdf_ != nullptr; }
     BxDFFlags flags() const { return bxdf_->flags(); }
@@ -33,6 +35,7 @@ class BSDF {
         return bs;
     }
     bool has_lane_lobes() const { return bxdf_->has_lane_lobes(); }
+    const Reradiation *reradiation() const { return bxdf_->reradiation(); }
     // sample_f as wavelength `lane` samples (BxDF::sample_f_as).
     std::optional<BSDFSample> sample_f_as(int lane, Vec3f wo_world, float uc, Vec2f u2,
                                           TransportMode mode = TransportMode::Radiance) const {

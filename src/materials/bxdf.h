@@ -13,6 +13,8 @@
 
 namespace caustica {
 
+struct Reradiation;
+
 enum class TransportMode { Radiance, Importance };
 
 // The mode of the other end's subpath: densities of the reverse direction are its.
@@ -104,6 +106,9 @@ class BxDF {
         return sample_f(wo, uc, u, mode);
     }
 
+    // A fluorescent surface's wavelength-shifting part (fluorescent_bxdf.h), which the walk
+    // samples itself; null for every other BxDF.
+    virtual const Reradiation *reradiation() const { return nullptr; }
     // f and both densities in one call, for BxDFs that share work between them (the default
     // makes the three calls).
     virtual BxDFEvaluation evaluate(Vec3f wo, Vec3f wi, TransportMode mode) const {

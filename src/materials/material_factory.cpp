@@ -7,6 +7,7 @@
 #include "materials/diffuse_material.h"
 #include "materials/diffuse_transmission_material.h"
 #include "materials/disney_material.h"
+#include "materials/fluorescent_material.h"
 #include "materials/hair_material.h"
 #include "materials/measured_material.h"
 #include "materials/mix_material.h"
@@ -388,6 +389,31 @@ std::shared_ptr<const ShadingPerturbation> read_shading_perturbation(const Param
     return nullptr;
 }
 
+// "fluorescent": a Caustica extension (fluorescent_material.h).
+MaterialPtr create_fluorescent(const ParameterDictionary &params, const NamedTextures &textures,
+                               const SourceLocation &loc) {
+    for (const char *name : {"absorption", "emission"})
+        if (!params.has(name))
+            throw InputError(loc, std::string("a fluorescent material needs \"spectrum ") + name + "\"");
+    SpectrumPtr absorption = params.get_one_spectrum("absorption", nullptr, SpectrumType::Albedo);
+    SpectrumPtr emission = params.get_one_spectrum("emission", nullptr, SpectrumType::Unbounded);
+    if (!absorption || !emission)
+        throw InputError(params.location(absorption ? "emission" : "absorption"), "expected a spectrum");
+    const float yield = params.get_one_float("quantumyield", 1);
+    if (!(yield >= 0 && yield <= 1))
+        throw InputError(params.location("quantumyield"), "\"quantumyield\" must lie in [0, 1]");
+    if (absorption->max_value() > 1)
+        throw InputError(params.location("absorption"),
+                         "\"absorption\" is the fraction of light the dye absorbs and must not exceed 1");
+    std::shared_ptr<const Fluorophore> dye;
+    try {
+        dye = std::make_shared<Fluorophore>(absorption, emission, yield);
+    } catch (const std::invalid_argument &e) {
+        throw InputError(params.location("emission"), e.what());
+    }
+    return std::make_shared<FluorescentMaterial>(read_reflectance(params, textures), std::move(dye));
+}
+
 } // namespace
 
 MaterialPtr create_material(const std::string &type, const ParameterDictionary &params,
@@ -430,6 +456,8 @@ MaterialPtr create_material(const std::string &type, const ParameterDictionary &
         material = create_measured(params);
     } else if (type == "thindielectric") {
         material = std::make_shared<ThinDielectricMaterial>(read_ior(params), read_slab_film(params, textures));
+    } else if (type == "fluorescent") {
+        material = create_fluorescent(params, textures, loc);
     } else if (type == "subsurface") {
         material = create_subsurface(params, textures);
     } else {

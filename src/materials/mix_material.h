@@ -27,6 +27,7 @@ class MixMaterial final : public Material {
     bool has_specular_lobe() const override { return either(&Material::has_specular_lobe); }
     bool forms_caustics() const override { return either(&Material::forms_caustics); }
     bool has_non_specular_lobe() const override { return either(&Material::has_non_specular_lobe); }
+    bool is_fluorescent() const override { return either(&Material::is_fluorescent); }
     bool is_wavelength_independent() const override {
         return materials_[0]->is_wavelength_independent() && materials_[1]->is_wavelength_independent();
     }

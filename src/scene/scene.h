@@ -38,6 +38,7 @@ struct SceneFeatures {
     bool emissive_media = false;         // a medium emits (Le or temperature)
     bool medium_boundaries = false;      // shapes without a material, which rays pass through
     bool subsurface = false;
+    bool fluorescence = false;           // a material re-radiates at other wavelengths
     // Curves are pbrt-v4's ray-facing ribbons: each ray sees one turned towards it, so light
     // paths meet other surfaces than camera paths do, and only pt renders them as pbrt-v4's
     // path tracer does (geometry/curves.h).
@@ -98,6 +99,9 @@ class Scene {
     ParameterDictionary integrator_params;
     SourceLocation integrator_location;
     SourceLocation camera_location; // of the Camera directive (empty for pbrt-v4's default camera)
+    // Of the first fluorescent material (Material::is_fluorescent), if any: only pt and lt
+    // render re-radiation, and the others refuse such a scene there.
+    std::optional<SourceLocation> fluorescent_material;
     std::string output_filename;         // Film "filename"
     SceneFeatures features;
     RenderOverrides overrides;
