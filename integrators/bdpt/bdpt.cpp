@@ -8,6 +8,7 @@
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/profile_subsurface.h"
 #include "integrators/common/splat_scale.h"
+#include "integrators/common/path_tracing.h"
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/tile_renderer.h"
 #include "integrators/common/transmittance.h"
@@ -44,20 +45,23 @@ struct SubpathContext {
 // was sampled there with solid-angle density pdf_fwd, until max_count vertices exist; returns the
 // new count. beta is the throughput carried by the ray, medium the one it starts in. Camera
 // subpaths (Radiance) that leave the scene end in a vertex at infinity when there are environment
-// lights to receive. Camera subpaths add the emission of emissive media they meet to *emitted
-// (with weight 1: no other strategy samples it), while fewer than max_count - 2 scattering
-// vertices lie behind (the path tracer's maxdepth rule).
+// lights to receive. Camera subpaths add to *camera_only what only they reach: the emission of
+// emissive media they meet (with weight 1: no other strategy samples it), while fewer than
+// max_count - 2 scattering vertices lie behind (the path tracer's maxdepth rule), and the light
+// that fluorescent surfaces re-radiate (path_tracing.h), after which the subpath ends.
 int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum &beta, float pdf_fwd,
                 TransportMode mode, const Medium *medium, PathVertex *path, int count, int max_count,
-                SampledSpectrum *emitted = nullptr, const std::optional<RayDifferential> &differential = std::nullopt) {
+                SampledSpectrum *camera_only = nullptr,
+                const std::optional<RayDifferential> &differential = std::nullopt) {
     const Scene &scene = ctx.scene;
     SubpathWalk walk(scene, mode, ctx.lambda, ctx.sample.sampler, ctx.sample.scratch, ctx.sample.rays, true);
+    if (camera_only) walk.allow_reradiation();
     walk.start(ray, medium, beta, differential);
     // Vertices that count towards max_count: a jump's exit shares its entry's (see after_jump).
     auto counted = [&] { return count - path[count - 1].jumps; };
     while (counted() < max_count) {
         const WalkEvent event = walk.advance();
-        if (emitted && counted() + 1 < max_count) *emitted += walk.emitted();
+        if (camera_only && counted() + 1 < max_count) *camera_only += walk.emitted();
         if (event == WalkEvent::Ended) break;
         PathVertex &prev = path[count - 1];
         if (event == WalkEvent::Escaped) {
@@ -95,8 +99,14 @@ int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum
         // is part of the same scattering event.
         const bool last = counted() == max_count;
         if (last && (point.in_medium() || !walk.hit().material->has_profile_subsurface())) break;
+        if (camera_only && !last) *camera_only += reradiated_light_at(scene, walk, ctx.sample.sampler, ctx.sample.rays);
         const std::optional<WalkScatter> s = walk.scatter();
         if (!s) break;
+        if (walk.reradiated()) {
+            *camera_only += reradiated_beyond(scene, walk, LightSampleContext{v.si.p, v.si.n, v.si.shading.n}, s->pdf_fwd,
+                                              counted() - 1, max_count - 2, ctx.sample.sampler, ctx.sample.rays);
+            break;
+        }
         if (s->profile) {
             // The predecessor's reverse density becomes the exit lobe's here (a walk from the
             // other end would leave the solid at this point); the reverse jump's is 1.
@@ -135,9 +145,9 @@ int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum
 }
 
 // The camera subpath: the lens vertex, then up to max_count - 1 scattering vertices; the
-// emission of media along it is added to *emitted.
+// emission of media and the re-radiated light met along it are added to *camera_only.
 int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathVertex *path,
-                   int max_count, SampledSpectrum *emitted) {
+                   int max_count, SampledSpectrum *camera_only) {
     PathVertex &lens = start_vertex(path[0]);
     lens.type = PathVertexType::Camera;
     lens.si.p = camera_ray.ray.o;
@@ -147,7 +157,7 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
     float pdf_pos, pdf_dir;
     ctx.scene.camera->pdf_we(camera_ray.ray, &pdf_pos, &pdf_dir);
     return random_walk(ctx, camera_ray.ray, camera_ray.weight, pdf_dir, TransportMode::Radiance, lens.medium,
-                       path, 1, max_count, emitted, camera_ray.differential);
+                       path, 1, max_count, camera_only, camera_ray.differential);
 }
 
 // The light subpath: a light chosen by power, an emitted ray, then scattering vertices.
@@ -325,9 +335,9 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             // jump adds one that is not a bounce (PathVertex::after_jump), at most one per bounce.
             PathVertex *camera_vertices = new_vertices(sample.scratch, 2 * (max_depth + 2));
             PathVertex *light_vertices = new_vertices(sample.scratch, 2 * (max_depth + 1));
-            SampledSpectrum medium_emission(0.f);
-            const int n_camera = camera_subpath(ctx, *camera_ray, camera_vertices, max_depth + 2, &medium_emission);
-            L += hero_only(medium_emission, lambda);
+            SampledSpectrum camera_only(0.f);
+            const int n_camera = camera_subpath(ctx, *camera_ray, camera_vertices, max_depth + 2, &camera_only);
+            L += hero_only(camera_only, lambda);
             const int n_light = light_subpath(ctx, light_vertices, max_depth + 1);
             // s = 1 samples a light point of its own (next-event estimation), so it is tried
             // even when the light subpath did not start (a light point under an alpha cut-out):

@@ -102,7 +102,7 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
     const float u = after_jump_ ? 0.f : sampler_.get_1d();
     // A fluorescent surface re-radiates for its share of u; the elastic lobe has the rest.
     const Reradiation *reradiation = after_jump_ ? nullptr : bsdf.reradiation();
-    if (reradiation && u < reradiation->probability(mode_)) return reradiate(*reradiation, wo);
+    if (reradiation && reradiation_allowed_ && u < reradiation->probability(mode_)) return reradiate(*reradiation, wo);
     const std::optional<BSDFSample> bs =
         lane < 0 ? bsdf.sample_f(wo, u, sampler_.get_2d(), mode_) : bsdf.sample_f_as(lane, wo, u, sampler_.get_2d(), mode_);
     if (!bs) return std::nullopt;

@@ -80,6 +80,12 @@ class SubpathWalk {
     SubpathWalk(const Scene &scene, TransportMode mode, SampledWavelengths &lambda, Sampler &sampler,
                 ScratchBuffer &bsdf_memory, uint64_t &rays, bool reverse_densities);
 
+    // Lets the walk re-radiate at fluorescent surfaces (reradiation.h). Without it, the
+    // re-radiated share of such a surface's scattering absorbs the path, consistently with the
+    // elastic lobe's densities: the light subpaths of the integrators that join subpaths, whose
+    // camera subpaths gather the re-radiated light alone (path_tracing.h).
+    void allow_reradiation() { reradiation_allowed_ = true; }
+
     // The path leaves along ray, in medium, carrying beta. A camera ray's differential gives the
     // texture footprint at the first surface it reaches (camera/camera_footprint.h); every other
     // vertex takes the camera's approximate footprint.
@@ -159,6 +165,7 @@ class SubpathWalk {
     bool after_jump_ = false;
     // Product of eta^2 over the radiance-mode refractions (1 for importance).
     float eta_scale_ = 1;
+    bool reradiation_allowed_ = false;
     // After a re-radiation, every lane carries one wavelength (lambda()).
     bool shifted_ = false;
     SampledWavelengths shifted_lambda_;

@@ -129,6 +129,7 @@ void trace_light_path(const LightPathContext &ctx) {
     // the throughput on the same scale (starting at 1) as in the path tracer. The path starts in
     // the light's medium (for an area light, that on its shape's outside).
     SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.sample.scratch, ctx.sample.rays, false);
+    walk.allow_reradiation();
     walk.start(start->les.ray, start->light->medium(), SampledSpectrum(1.f));
     while (walk.advance() == WalkEvent::Vertex) {
         const ScatteringPoint &point = walk.vertex();

@@ -12,6 +12,7 @@
 #include "integrators/common/photon_search_parameter.h"
 #include "integrators/common/photon_side.h"
 #include "integrators/common/profile_subsurface.h"
+#include "integrators/common/path_tracing.h"
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/wavelength_groups.h"
 #include "materials/profile_subsurface_material.h"
@@ -196,6 +197,7 @@ void trace_camera_path(const Scene &scene, int max_depth, const CameraRay &camer
     Sampler &sampler = ctx.sampler;
     // The visible points' BSDFs must outlive the camera pass.
     SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, ctx.iteration_scratch, ctx.rays, false);
+    walk.allow_reradiation();
     walk.start(camera_ray.ray, scene.camera_medium, camera_ray.weight, camera_ray.differential);
     bool specular_bounce = false;
     bool medium_scatter = false; // the last scattering event was in a medium
@@ -278,6 +280,14 @@ void trace_camera_path(const Scene &scene, int max_depth, const CameraRay &camer
             if (si.material->has_profile_subsurface())
                 find_subsurface_visible_point(scene, si, bsdf, depth, walk.beta, lambda, walk.medium(), ctx, L,
                                               state.subsurface_vp);
+            // Light re-radiated by fluorescent surfaces, here or further on: photons carry none of
+            // it (reradiation.h), so the path goes on beyond its visible point to gather it with
+            // the path tracer's strategies (path_tracing.h).
+            if (scene.features.fluorescence) {
+                L += reradiated_light_at(scene, walk, sampler, ctx.rays);
+                if (const std::optional<WalkScatter> s = walk.scatter(); s && !s->profile)
+                    L += reradiated_beyond(scene, walk, here, s->pdf_fwd, depth + 1, max_depth, sampler, ctx.rays);
+            }
             return;
         }
         // Specular and glossy surfaces have no subsurface entry (that is a diffuse lobe).

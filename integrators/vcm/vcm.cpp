@@ -11,6 +11,7 @@
 #include "integrators/common/photon_search_parameter.h"
 #include "integrators/common/profile_subsurface.h"
 #include "integrators/common/splat_scale.h"
+#include "integrators/common/path_tracing.h"
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/transmittance.h"
 #include "integrators/vcm/light_vertex.h"
@@ -480,6 +481,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     SubpathMis m = SubpathMis::camera_start(it.light_paths, pdf_dir * it.full_frame_pixels);
 
     SubpathWalk walk(scene, TransportMode::Radiance, lambda, sampler, pixel.sample_scratch, pixel.rays, true);
+    walk.allow_reradiation();
     walk.start(camera_ray.ray, scene.camera_medium, camera_ray.weight, camera_ray.differential);
     SampledSpectrum L(0.f);
     LightSampleContext previous{camera_ray.ray.o, Vec3f{}, Vec3f{}};
@@ -539,8 +541,16 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
         while (true) {
             if (point.in_medium() || is_non_specular(point.bsdf.flags()))
                 L += walk.beta * complete_at(ctx, CameraVertex{point, m, path_length, walk.after_jump()});
+            // Light that a fluorescent surface re-radiates: no light subpath carries it, so the
+            // path tracer's strategies alone gather it (path_tracing.h).
+            L += in_group_measure(reradiated_light_at(scene, walk, sampler, pixel.rays), lambda.secondary_terminated(),
+                                  ctx.hero_scale);
             const std::optional<WalkScatter> s = walk.scatter();
             if (!s) return L;
+            if (walk.reradiated())
+                return L + in_group_measure(reradiated_beyond(scene, walk, LightSampleContext{point.p, point.ng, point.ns},
+                                                              s->pdf_fwd, path_length, it.max_depth, sampler, pixel.rays),
+                                            lambda.secondary_terminated(), ctx.hero_scale);
             if (walk.after_jump()) {
                 // The exit lobe's direction; the reverse density at the exit is the jump's, 1.
                 m.scatter(w, w.surface, s->cos_out, s->pdf_fwd, 1.f, false);

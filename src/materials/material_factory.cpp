@@ -402,9 +402,6 @@ MaterialPtr create_fluorescent(const ParameterDictionary &params, const NamedTex
     const float yield = params.get_one_float("quantumyield", 1);
     if (!(yield >= 0 && yield <= 1))
         throw InputError(params.location("quantumyield"), "\"quantumyield\" must lie in [0, 1]");
-    if (absorption->max_value() > 1)
-        throw InputError(params.location("absorption"),
-                         "\"absorption\" is the fraction of light the dye absorbs and must not exceed 1");
     std::shared_ptr<const Fluorophore> dye;
     try {
         dye = std::make_shared<Fluorophore>(absorption, emission, yield);

@@ -99,9 +99,6 @@ class Scene {
     ParameterDictionary integrator_params;
     SourceLocation integrator_location;
     SourceLocation camera_location; // of the Camera directive (empty for pbrt-v4's default camera)
-    // Of the first fluorescent material (Material::is_fluorescent), if any: only pt and lt
-    // render re-radiation, and the others refuse such a scene there.
-    std::optional<SourceLocation> fluorescent_material;
     std::string output_filename;         // Film "filename"
     SceneFeatures features;
     RenderOverrides overrides;

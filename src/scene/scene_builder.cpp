@@ -192,20 +192,15 @@ struct MaterialTable {
     std::map<std::string, MaterialPtr> named;
 };
 
-void add_material(const MaterialPtr &material, const SourceLocation &loc, Scene &scene) {
-    scene.materials.push_back(material);
-    if (material->is_fluorescent() && !scene.fluorescent_material) scene.fluorescent_material = loc;
-}
-
 MaterialTable create_materials(const SceneDescription &d, const NamedTextures &textures, Scene &scene) {
     MaterialTable table;
     for (const auto &[name, entity] : d.named_materials) {
         table.named[name] = create_material(entity.type, entity.params, textures, entity.loc, &table.named);
-        if (table.named[name]) add_material(table.named[name], entity.loc, scene);
+        if (table.named[name]) scene.materials.push_back(table.named[name]);
     }
     for (const SceneEntity &m : d.materials) {
         table.anonymous.push_back(create_material(m.type, m.params, textures, m.loc, &table.named));
-        if (table.anonymous.back()) add_material(table.anonymous.back(), m.loc, scene);
+        if (table.anonymous.back()) scene.materials.push_back(table.anonymous.back());
     }
     scene.material_count = d.named_materials.size() + d.materials.size();
     return table;
@@ -379,29 +374,19 @@ void analyse_features(const SceneDescription &d, Scene &scene) {
 
 namespace {
 
-// Fluorescent re-radiation changes a path's wavelength; pt and lt carry that (their subpaths
-// are never joined to another), while the bidirectional and photon integrators join camera and
-// light subpaths that share their wavelengths, which cannot meet after a shift. Those refuse
-// the scene rather than render it without the glow.
+// A light path that re-radiates lands at a wavelength of its own, which a monochromatic film
+// (one fixed wavelength) does not record: lt cannot render a fluorescent scene at one wavelength.
+// The other integrators gather re-radiated light from the camera's end (path_tracing.h).
 void refuse_unrendered_fluorescence(const Scene &scene, const RenderOverrides &ov) {
-    if (!scene.fluorescent_material) return;
-    const std::string &name = scene.integrator_name;
-    if (name != "pt" && name != "lt")
-        throw InputError(*scene.fluorescent_material,
-                         "a fluorescent material re-radiates light at new wavelengths, which the " + name +
-                             " integrator does not render: use pt or lt");
-    if (name == "lt" && ov.wavelength > 0)
+    if (scene.features.fluorescence && scene.integrator_name == "lt" && ov.wavelength > 0)
         throw InputError("--wavelength: lt renders a fluorescent scene's light at the wavelengths it is re-radiated "
-                         "at, not at one; use pt");
+                         "at, not at one; use another integrator");
 }
 
 std::string percent(float fraction) { return std::to_string(int(std::lround(100 * fraction))) + "%"; }
 } // namespace
 
 IntegratorChoice choose_auto_integrator(const SceneFeatures &features, bool camera_models_importance) {
-    if (features.fluorescence)
-        return {"pt", "the scene has fluorescent materials, whose re-radiation pt and lt render; pt finds "
-                      "what the camera sees of them with light sampling at each re-radiated wavelength"};
     if (features.curves)
         return {"pt", "the scene has curves, which camera paths alone see as pbrt-v4 does (ray-facing "
                       "ribbons, turned towards each ray)"};
