@@ -15,7 +15,7 @@
 
 namespace caustica {
 
-SampledWavelengths sample_wavelengths(const Scene &scene, float u) {
+SampledWavelengths sample_wavelengths(const Scene &scene, float u, WavelengthsFor use) {
     if (scene.overrides.wavelength > 0) return SampledWavelengths::fixed(scene.overrides.wavelength);
     if (scene.achromatic_wavelength > 0) return SampledWavelengths::fixed(scene.achromatic_wavelength);
     if (const SpectralBuckets *buckets = scene.film->spectral()) {
@@ -24,10 +24,12 @@ SampledWavelengths sample_wavelengths(const Scene &scene, float u) {
         if (scene.overrides.single_wavelength) lambda.terminate_secondary();
         return lambda;
     }
-    if (scene.wavelength_density) {
-        return scene.overrides.single_wavelength ? SampledWavelengths::sample_single(*scene.wavelength_density, u)
-                                                 : SampledWavelengths::sample(*scene.wavelength_density, u);
-    }
+    const std::optional<WavelengthDensity> &density =
+        use == WavelengthsFor::LightPath && scene.light_path_wavelength_density ? scene.light_path_wavelength_density
+                                                                                : scene.wavelength_density;
+    if (density)
+        return scene.overrides.single_wavelength ? SampledWavelengths::sample_single(*density, u)
+                                                 : SampledWavelengths::sample(*density, u);
     if (scene.overrides.single_wavelength) return SampledWavelengths::sample_single(u);
     return SampledWavelengths::sample_visible(u);
 }

@@ -22,8 +22,10 @@ using RadianceFunction = std::function<SampledSpectrum(const CameraRay &ray, Sam
 
 // Samples the path's wavelengths as the scene's overrides ask (hero, single, or fixed): from the
 // scene's wavelength density, fitted to its lights (spectral/wavelength_density.h), or from a
-// spectral film's own range.
-SampledWavelengths sample_wavelengths(const Scene &scene, float u);
+// spectral film's own range. A light path that is not joined to a camera path (lt's) draws them
+// from the density fitted to the lights alone (Scene::light_path_wavelength_density).
+enum class WavelengthsFor { CameraPath, LightPath };
+SampledWavelengths sample_wavelengths(const Scene &scene, float u, WavelengthsFor use = WavelengthsFor::CameraPath);
 
 // What the work for one (pixel, sample index) may use: the thread's sampler, already started at
 // that pixel and index, its scratch memory (reset after every sample) and its counters.

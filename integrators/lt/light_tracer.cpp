@@ -110,7 +110,7 @@ void trace_light_path(const LightPathContext &ctx) {
     const Scene &scene = ctx.scene;
     Sampler &sampler = ctx.sample.sampler;
 
-    SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
+    SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d(), WavelengthsFor::LightPath);
     // The path's time within the shutter, drawn only when geometry moves (as camera paths do).
     const Shutter *shutter = scene.motion_shutter();
     const float time = shutter ? shutter->time(sampler.get_1d()) : 0.f;

@@ -22,7 +22,7 @@ class FluorescentMaterial final : public Material {
         : reflectance_(std::move(reflectance)), dye_(std::move(dye)) {}
     BSDF get_bsdf(const SurfaceInteraction &si, const SampledWavelengths &lambda,
                   ScratchBuffer &scratch) const override;
-    bool is_fluorescent() const override { return true; }
+    const Fluorophore *fluorophore() const override { return dye_.get(); }
 
   private:
     SpectrumTexturePtr reflectance_;

@@ -72,6 +72,16 @@ float Fluorophore::radiance_albedo(float lambda_out) const {
     return quantum_yield_ * emission(lambda_out) / lambda_out * running_sum(excitation_below_, lambda_out);
 }
 
+std::vector<float> Fluorophore::reemitted(const std::function<float(float)> &incident) const {
+    std::vector<float> absorbed(Bins + 1);
+    for (int i = 0; i <= Bins; ++i) absorbed[i] = incident(LambdaMin + i);
+    std::vector<float> out(Bins + 1, 0.f);
+    for (int o = 0; o <= Bins; ++o)
+        for (int i = 0; i <= o; ++i)
+            if (absorbed[i] > 0) out[o] += absorbed[i] * reradiation(LambdaMin + i, LambdaMin + o);
+    return out;
+}
+
 ReradiationShift sample_reradiation_shift(const Fluorophore &dye, TransportMode mode, const SampledWavelengths &lambda,
                                           float u) {
     const bool radiance = mode == TransportMode::Radiance;

@@ -26,6 +26,9 @@
 #include "spectral/sampled_wavelengths.h"
 #include "spectral/spectrum.h"
 
+#include <functional>
+#include <vector>
+
 namespace caustica {
 
 class Fluorophore {
@@ -53,6 +56,11 @@ class Fluorophore {
     // (radiance: what a unit spectral irradiance flat over all wavelengths returns at lambda_out).
     float importance_albedo(float lambda_in) const;
     float radiance_albedo(float lambda_out) const;
+
+    // The spectral power the dye re-emits, per nm at each whole nm of the sampled range from
+    // LambdaMin, when all of `incident` (power per nm) falls on it: the sum over absorbed
+    // wavelengths of incident times pi f. A scene's wavelength density counts it as emitted.
+    std::vector<float> reemitted(const std::function<float(float)> &incident) const;
 
   private:
     float emission(float lambda) const { return std::max((*emission_)(lambda), 0.f) * emission_scale_; }

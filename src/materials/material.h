@@ -9,6 +9,7 @@
 
 namespace caustica {
 
+class Fluorophore;
 class Medium;
 class ShadingPerturbation;
 struct SurfaceInteraction;
@@ -30,8 +31,9 @@ class Material {
     // Does any of its lobes scatter diffusely or glossily (so it can receive a caustic)?
     virtual bool has_non_specular_lobe() const { return true; }
     virtual bool has_subsurface() const { return false; }
-    // Does it shift light to other wavelengths (fluorescent_material.h)?
-    virtual bool is_fluorescent() const { return false; }
+    // Does it shift light to other wavelengths (fluorescent_material.h)? Its own dye, if it has one.
+    virtual bool is_fluorescent() const { return fluorophore() != nullptr; }
+    virtual const Fluorophore *fluorophore() const { return nullptr; }
     // Subsurface scattering by a diffusion profile (a BSSRDF), which the integrators sample with
     // probe rays (integrators/common/profile_subsurface.h) rather than as a BSDF lobe.
     virtual bool has_profile_subsurface() const { return false; }

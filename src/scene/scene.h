@@ -106,8 +106,12 @@ class Scene {
     // SceneFeatures::achromatic) where its lights' colour is largest; 0: wavelengths are sampled.
     float achromatic_wavelength = 0;
     // The density sampled wavelengths are drawn from: fitted to the lights' and emissive media's
-    // spectral power (spectral/wavelength_density.h); a spectral film samples its own range.
+    // spectral power and to what fluorescent dyes would re-emit of it (spectral/
+    // wavelength_density.h); a spectral film samples its own range.
     std::optional<WavelengthDensity> wavelength_density;
+    // lt's light paths, which splat at their own wavelengths, carry only what the lights emit:
+    // when dyes add to the density above, the density fitted to the lights alone.
+    std::optional<WavelengthDensity> light_path_wavelength_density;
 
     // Scene statistics for `caustica info`.
     size_t shape_count = 0, triangle_count = 0, material_count = 0, medium_count = 0,

@@ -8,6 +8,7 @@
 #include "lights/light_factory.h"
 #include "lights/medium_emitter.h"
 #include "lights/spectral_power.h"
+#include "materials/fluorophore.h"
 #include "materials/material_factory.h"
 #include "media/medium.h"
 #include "media/medium_factory.h"
@@ -468,7 +469,20 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     std::vector<const Light *> emitters;
     for (const std::vector<LightPtr> *list : {&scene->lights, &scene->medium_emitters})
         for (const LightPtr &light : *list) emitters.push_back(light.get());
-    scene->wavelength_density.emplace(EmittedSpectralPower(emitters));
+    // Wavelengths fitted to the light the scene emits, and to what its fluorescent dyes would
+    // re-emit of it if all of it reached each of them: under a blacklight, half of the fitted
+    // wavelengths then fall where the dyes glow rather than in the invisible line.
+    const EmittedSpectralPower emitted(emitters);
+    std::vector<std::vector<float>> reemitted;
+    for (const MaterialPtr &m : scene->materials)
+        if (const Fluorophore *dye = m->fluorophore()) reemitted.push_back(dye->reemitted(emitted));
+    if (!reemitted.empty()) scene->light_path_wavelength_density.emplace(emitted);
+    scene->wavelength_density.emplace([&](float lambda) {
+        float power = emitted(lambda);
+        const size_t nm = size_t(std::clamp(std::lround(lambda - LambdaMin), 0L, long(LambdaMax - LambdaMin)));
+        for (const std::vector<float> &r : reemitted) power += r[nm];
+        return power;
+    });
     const Spectrum *colour = achromatic_colour(*scene);
     scene->features.achromatic = colour != nullptr;
     // Overrides that ask for wavelengths (monochromatic, single or sampled) come first.

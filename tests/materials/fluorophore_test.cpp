@@ -72,6 +72,22 @@ TEST(Fluorophore, SampledShiftsAverageToTheAlbedos) {
     }
 }
 
+// What a dye re-emits of a 1-nm line at 370 nm: the line's power times pi f, which is
+// a Q (370 / l) e(l) at every longer wavelength and nothing below.
+TEST(Fluorophore, ReemitsALineAsItsEmissionSpectrum) {
+    const Fluorophore dye = overlapping_dye(0.8f);
+    const std::vector<float> out = dye.reemitted([](float l) { return l == 370 ? 2.f : 0.f; });
+    ASSERT_EQ(out.size(), size_t(LambdaMax - LambdaMin + 1));
+    for (int nm = int(LambdaMin); nm <= int(LambdaMax); ++nm) {
+        // The emission triangle 430-500-650 nm has area 110; the absorption at 370 nm is 0.95.
+        const float e = nm <= 430 || nm >= 650 ? 0.f : nm <= 500 ? (nm - 430) / 70.f : (650 - nm) / 150.f;
+        const float expected = 2 * 0.95f * 0.8f * (370.f / nm) * e / 110;
+        EXPECT_NEAR(out[size_t(nm - LambdaMin)], expected, 1e-3f * expected + 1e-9f) << nm;
+        if (nm < 370) EXPECT_EQ(out[size_t(nm - LambdaMin)], 0.f);
+    }
+    EXPECT_GT(out[size_t(500 - LambdaMin)], 0.f);
+}
+
 TEST(Fluorophore, EmissionWithoutPowerIsRefused) {
     EXPECT_THROW(Fluorophore(knots({300, 1, 900, 1}), knots({900, 1, 950, 1}), 1), std::invalid_argument);
 }
