@@ -73,6 +73,7 @@ SampledSpectrum trace_radiance(const Scene &scene, SubpathWalk &walk, EmissionMI
 }
 
 SampledSpectrum reradiated_light_at(const Scene &scene, const SubpathWalk &walk, Sampler &sampler, uint64_t &rays) {
+    if (!scene.features.fluorescence) return SampledSpectrum(0.f);
     const ScatteringPoint &point = walk.vertex();
     if (point.in_medium() || walk.after_jump() || !point.bsdf.reradiation()) return SampledSpectrum(0.f);
     const SurfaceInteraction &si = walk.hit();

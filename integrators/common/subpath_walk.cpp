@@ -25,6 +25,9 @@ SubpathWalk::SubpathWalk(const Scene &scene, TransportMode mode, SampledWaveleng
     : scene_(scene), mode_(mode), lambda_(lambda), sampler_(sampler), bsdf_memory_(bsdf_memory), rays_(rays),
       reverse_densities_(reverse_densities) {}
 
+// Only scenes with a dye pay for asking each BSDF whether it re-radiates.
+void SubpathWalk::allow_reradiation() { reradiation_allowed_ = scene_.features.fluorescence; }
+
 void SubpathWalk::start(const Ray &ray, const Medium *medium, const SampledSpectrum &throughput,
                         const std::optional<RayDifferential> &differential) {
     ray_ = ray;
@@ -101,8 +104,8 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
     // A jump's exit leaves by its exit lobe, a single lobe: no lobe choice is drawn.
     const float u = after_jump_ ? 0.f : sampler_.get_1d();
     // A fluorescent surface re-radiates for its share of u; the elastic lobe has the rest.
-    const Reradiation *reradiation = after_jump_ ? nullptr : bsdf.reradiation();
-    if (reradiation && reradiation_allowed_ && u < reradiation->probability(mode_)) return reradiate(*reradiation, wo);
+    const Reradiation *reradiation = reradiation_allowed_ && !after_jump_ ? bsdf.reradiation() : nullptr;
+    if (reradiation && u < reradiation->probability(mode_)) return reradiate(*reradiation, wo);
     const std::optional<BSDFSample> bs =
         lane < 0 ? bsdf.sample_f(wo, u, sampler_.get_2d(), mode_) : bsdf.sample_f_as(lane, wo, u, sampler_.get_2d(), mode_);
     if (!bs) return std::nullopt;
@@ -139,21 +142,24 @@ std::optional<WalkScatter> SubpathWalk::reradiate(const Reradiation &reradiation
     const Vec2f u = sampler_.get_2d();
     const ReradiationShift shift = sample_reradiation_shift(*reradiation.fluorophore, mode_, lambda(), sampler_.get_1d());
     if (!shift) return std::nullopt;
-    const ReradiationBxDF lobe_storage(shift.albedo, reradiation);
-    const BSDF lobe(point_.bsdf.frame(), &lobe_storage);
-    const std::optional<BSDFSample> bs = lobe.sample_f(wo, 0.f, u, mode_);
-    if (!bs) return std::nullopt;
+    // The lobe is sampled in the shading frame directly: a second caller of BSDF::sample_f would
+    // keep the compiler from inlining it into scatter(), the hot path of every walk.
+    const ReradiationBxDF lobe(shift.albedo, reradiation);
+    const Frame &frame = point_.bsdf.frame();
+    const Vec3f wo_local = frame.to_local(wo);
+    std::optional<BSDFSample> bs = lobe.sample_f(wo_local, 0.f, u, mode_);
+    if (!bs || wo_local.z == 0 || bs->wi.z == 0) return std::nullopt;
     WalkScatter s;
-    s.wi = bs->wi;
+    s.wi = frame.from_local(bs->wi);
     s.pdf_fwd = bs->pdf;
-    if (reverse_densities_) s.pdf_rev = lobe.pdf(bs->wi, wo, adjoint(mode_));
-    s.cos_out = abs_dot(si_.n, bs->wi);
-    beta *= bs->f * (scattering_cosine(mode_, si_, wo, bs->wi) / bs->pdf);
+    if (reverse_densities_) s.pdf_rev = lobe.pdf(bs->wi, wo_local, adjoint(mode_));
+    s.cos_out = abs_dot(si_.n, s.wi);
+    beta *= bs->f * (scattering_cosine(mode_, si_, wo, s.wi) / bs->pdf);
     if (mode_ == TransportMode::Importance) lambda_.shift_to(shift.lambda);
     shifted_lambda_ = lambda_;
     shifted_lambda_.shift_to(shift.lambda);
     shifted_ = true;
-    leave(si_, bs->wi);
+    leave(si_, s.wi);
     return s;
 }
 

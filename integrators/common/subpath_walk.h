@@ -84,7 +84,7 @@ class SubpathWalk {
     // re-radiated share of such a surface's scattering absorbs the path, consistently with the
     // elastic lobe's densities: the light subpaths of the integrators that join subpaths, whose
     // camera subpaths gather the re-radiated light alone (path_tracing.h).
-    void allow_reradiation() { reradiation_allowed_ = true; }
+    void allow_reradiation();
 
     // The path leaves along ray, in medium, carrying beta. A camera ray's differential gives the
     // texture footprint at the first surface it reaches (camera/camera_footprint.h); every other
