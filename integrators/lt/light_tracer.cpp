@@ -4,9 +4,9 @@
 #include "geometry/interaction.h"
 #include "integrators/common/camera_importance.h"
 #include "integrators/common/light_path_start.h"
-#include "integrators/common/subpath_walk.h"
 #include "integrators/common/reradiation.h"
 #include "integrators/common/splat_scale.h"
+#include "integrators/common/subpath_walk.h"
 #include "integrators/common/tile_renderer.h"
 #include "integrators/common/transmittance.h"
 #include "scene/scene.h"
@@ -146,7 +146,7 @@ void trace_light_path(const LightPathContext &ctx) {
         while (true) {
             if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
                 connect_to_lens(ctx, point, start->flux * walk.beta, lambda);
-                if (!point.in_medium() && point.bsdf.reradiation())
+                if (scene.features.fluorescence && !point.in_medium() && point.bsdf.reradiation())
                     connect_reradiated_to_lens(ctx, point, start->flux * walk.beta, lambda);
             }
             const std::optional<WalkScatter> s = walk.scatter();

@@ -285,8 +285,13 @@ void trace_camera_path(const Scene &scene, int max_depth, const CameraRay &camer
             // the path tracer's strategies (path_tracing.h).
             if (scene.features.fluorescence) {
                 L += reradiated_light_at(scene, walk, sampler, ctx.rays);
-                if (const std::optional<WalkScatter> s = walk.scatter(); s && !s->profile)
-                    L += reradiated_beyond(scene, walk, here, s->pdf_fwd, depth + 1, max_depth, sampler, ctx.rays);
+                std::optional<WalkScatter> s = walk.scatter();
+                LightSampleContext from = here;
+                if (s && s->profile) { // on from the exit of the profile solid it enters
+                    s = walk.jump(*s->profile) ? walk.scatter() : std::nullopt;
+                    from = LightSampleContext{walk.hit().p, walk.hit().n, walk.hit().shading.n};
+                }
+                if (s) L += reradiated_beyond(scene, walk, from, s->pdf_fwd, depth + 1, max_depth, sampler, ctx.rays);
             }
             return;
         }
