@@ -11,8 +11,9 @@
 //    emission: lane j takes pi f(lambda_j -> lambda) / p(lambda), and its splats now land at
 //    lambda, each lane still weighed by the density its own wavelength was drawn with.
 // Every lane thus keeps an unbiased estimate, the new wavelength's density is exact, and no lane
-// is wasted (sample_reradiation_shift, fluorophore.h). The choice to re-radiate rather than reflect depends on the carried set alone
-// (fluorescent_bxdf.h), as the hero-wavelength estimator requires.
+// is wasted (sample_reradiation_shift, fluorophore.h). The choice to re-radiate rather than
+// reflect depends on the carried set alone (fluorescent_bxdf.h), as the hero-wavelength
+// estimator requires.
 #pragma once
 
 #include "materials/bsdf.h"
