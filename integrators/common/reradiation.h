@@ -21,6 +21,7 @@
 #include "spectral/sampled_wavelengths.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace caustica {
 
@@ -29,6 +30,16 @@ class Sampler;
 class Scene;
 struct LightSampleContext;
 struct SurfaceInteraction;
+
+// A re-radiation drawn at a vertex reached carrying `lambda` in `mode`: the lobe for its shift,
+// and the wavelengths the path carries after it (every lane at the new one, each keeping its
+// density). Empty when nothing re-radiates to or from the carried wavelengths.
+struct ReradiationSample {
+    ReradiationBxDF lobe;
+    SampledWavelengths lambda;
+};
+std::optional<ReradiationSample> sample_reradiation(const Reradiation &reradiation, TransportMode mode,
+                                                    const SampledWavelengths &lambda, float u);
 
 // Next-event estimation of the re-radiated light at a fluorescent surface point of a camera
 // path: a shift is drawn, and a light sample taken at its wavelength through the re-radiation

@@ -140,24 +140,23 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
 
 std::optional<WalkScatter> SubpathWalk::reradiate(const Reradiation &reradiation, Vec3f wo) {
     const Vec2f u = sampler_.get_2d();
-    const ReradiationShift shift = sample_reradiation_shift(*reradiation.fluorophore, mode_, lambda(), sampler_.get_1d());
-    if (!shift) return std::nullopt;
+    const std::optional<ReradiationSample> r = sample_reradiation(reradiation, mode_, lambda(), sampler_.get_1d());
+    if (!r) return std::nullopt;
     // The lobe is sampled in the shading frame directly: a second caller of BSDF::sample_f would
     // keep the compiler from inlining it into scatter(), the hot path of every walk.
-    const ReradiationBxDF lobe(shift.albedo, reradiation);
     const Frame &frame = point_.bsdf.frame();
     const Vec3f wo_local = frame.to_local(wo);
-    std::optional<BSDFSample> bs = lobe.sample_f(wo_local, 0.f, u, mode_);
+    const std::optional<BSDFSample> bs = r->lobe.sample_f(wo_local, 0.f, u, mode_);
     if (!bs || wo_local.z == 0 || bs->wi.z == 0) return std::nullopt;
     WalkScatter s;
     s.wi = frame.from_local(bs->wi);
     s.pdf_fwd = bs->pdf;
-    if (reverse_densities_) s.pdf_rev = lobe.pdf(bs->wi, wo_local, adjoint(mode_));
+    if (reverse_densities_) s.pdf_rev = r->lobe.pdf(bs->wi, wo_local, adjoint(mode_));
     s.cos_out = abs_dot(si_.n, s.wi);
     beta *= bs->f * (scattering_cosine(mode_, si_, wo, s.wi) / bs->pdf);
-    if (mode_ == TransportMode::Importance) lambda_.shift_to(shift.lambda);
-    shifted_lambda_ = lambda_;
-    shifted_lambda_.shift_to(shift.lambda);
+    // A light subpath's splats land at the new wavelength; a camera subpath's film keeps its own.
+    if (mode_ == TransportMode::Importance) lambda_ = r->lambda;
+    shifted_lambda_ = r->lambda;
     shifted_ = true;
     leave(si_, s.wi);
     return s;

@@ -93,16 +93,12 @@ void connect_to_lens(const LightPathContext &ctx, const ScatteringPoint &point, 
 // wavelength drawn from the dye's emission (reradiation.h), splatted there.
 void connect_reradiated_to_lens(const LightPathContext &ctx, const ScatteringPoint &point,
                                 const SampledSpectrum &throughput, const SampledWavelengths &lambda) {
-    const Reradiation &reradiation = *point.bsdf.reradiation();
-    const ReradiationShift shift = sample_reradiation_shift(*reradiation.fluorophore, TransportMode::Importance, lambda,
-                                                            ctx.sample.sampler.get_1d());
-    if (!shift) return;
-    const ReradiationBxDF lobe(shift.albedo, reradiation);
+    const std::optional<ReradiationSample> r = sample_reradiation(*point.bsdf.reradiation(), TransportMode::Importance,
+                                                                  lambda, ctx.sample.sampler.get_1d());
+    if (!r) return;
     ScatteringPoint emitter = point;
-    emitter.bsdf = BSDF(point.bsdf.frame(), &lobe);
-    SampledWavelengths emitted = lambda;
-    emitted.shift_to(shift.lambda);
-    connect_to_lens(ctx, emitter, throughput, emitted);
+    emitter.bsdf = BSDF(point.bsdf.frame(), &r->lobe);
+    connect_to_lens(ctx, emitter, throughput, r->lambda);
 }
 
 // One light path for the sampler's current (pixel, iteration).

@@ -175,6 +175,21 @@ TEST_P(FluorescentPlane, GlowsAsTheClosedFormPredicts) {
     EXPECT_TRUE(control.worst_z > 5.0 || control.glow_error > 0.01) << "a 3% error would pass";
 }
 
+// lt's light paths land at the wavelengths they are re-radiated at, which a film fixed at one
+// wavelength does not record: --wavelength with lt is refused, with exit status 2 and a reason.
+TEST(Fluorescence, LightTracingRefusesOneFixedWavelength) {
+    const std::string dir = scratch_dir("fluorescent-monochromatic");
+    const std::string scene = plane_scene(dir), errors = dir + "/stderr.txt";
+    EXPECT_EQ(run_caustica("render " + scene + " --quiet --integrator lt --spp 1 --wavelength 520 -o " + dir +
+                               "/lt.exr",
+                           errors),
+              2);
+    EXPECT_NE(read_text(errors).find("--wavelength"), std::string::npos);
+    EXPECT_EQ(run_caustica("render " + scene + " --quiet --integrator pt --spp 1 --wavelength 520 -o " + dir +
+                           "/pt.exr"),
+              0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Integrators, FluorescentPlane,
                          ::testing::Values(RenderCase{"plane", "pt", 64}, RenderCase{"plane", "lt", 4096},
                                            RenderCase{"plane", "bdpt", 64}, RenderCase{"plane", "sppm", 64},

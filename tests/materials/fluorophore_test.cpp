@@ -88,6 +88,16 @@ TEST(Fluorophore, ReemitsALineAsItsEmissionSpectrum) {
     EXPECT_GT(out[size_t(500 - LambdaMin)], 0.f);
 }
 
+// Anti-Stokes emission is left out: no light leaves at a shorter wavelength than it arrived at,
+// even where absorption and emission overlap (the dye above absorbs and emits at 440-480 nm).
+TEST(Fluorophore, NeverEmitsShorterThanItAbsorbs) {
+    const Fluorophore dye = overlapping_dye(1);
+    EXPECT_GT(dye.reradiation(450, 470), 0.f);
+    EXPECT_EQ(dye.reradiation(470, 450), 0.f);
+    EXPECT_EQ(dye.reradiation(470, 469.9f), 0.f);
+    EXPECT_GT(dye.reradiation(470, 470), 0.f);
+}
+
 TEST(Fluorophore, EmissionWithoutPowerIsRefused) {
     EXPECT_THROW(Fluorophore(knots({300, 1, 900, 1}), knots({900, 1, 950, 1}), 1), std::invalid_argument);
 }
