@@ -13,6 +13,30 @@ namespace caustica {
 
 class Scene;
 
+// How the processes of a distributed render (an MPI job: mpi/mpi_share.h) share one render.
+// Every process renders the same scene under the same budget; the loops that drive integrators
+// (tile_renderer.h, iteration_renderer.h) ask this which part of the work is theirs and agree
+// with the other processes at every boundary between sweeps. The calls other than rank() and
+// ranks() are collective: every process makes the same calls in the same order. A process on
+// its own is rank 0 of 1, and agreeing is a no-op.
+class RenderShare {
+  public:
+    virtual ~RenderShare() = default;
+    virtual int rank() const { return 0; }
+    virtual int ranks() const { return 1; }
+    // Rank 0's value, on every rank: decisions that depend on a clock (a time budget).
+    virtual int64_t agree(int64_t value) const { return value; }
+    // The sum of every rank's value.
+    virtual int64_t sum(int64_t value) const { return value; }
+    bool any(bool value) const { return sum(value ? 1 : 0) > 0; }
+    // The largest of every rank's value.
+    float max(float value) const;
+    // Every rank's bytes, concatenated in rank order.
+    virtual std::vector<char> gather_all(std::vector<char> bytes) const { return bytes; }
+    // The share of a process on its own.
+    static const RenderShare &alone();
+};
+
 // Budget for one render: a fixed sample count, or as many samples as fit in a time limit.
 struct RenderBudget {
     int spp = 16;
@@ -28,6 +52,11 @@ struct RenderBudget {
     // when the interrupted iteration left no trace. These are the moments a checkpoint can be
     // taken (cli/checkpoint.h); the callback may be called twice for the same state.
     std::function<void()> at_boundary;
+    // The processes sharing the render (see RenderShare); null: this process alone. A
+    // distributed render calls at_boundary only where every rank's state is consistent, on
+    // every rank at once.
+    const RenderShare *share = nullptr;
+    const RenderShare &sharing() const { return share ? *share : RenderShare::alone(); }
 };
 
 // What a render has done. A render continues from the stats it is given: a fresh RenderStats

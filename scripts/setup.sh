@@ -8,6 +8,7 @@ packages=(
   libembree-dev libtbb-dev libopenexr-dev libopenimageio-dev openimageio-tools libflann-dev
   libassimp-dev zlib1g-dev libosd-dev libcli11-dev libnanovdb-dev libblosc-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libopenmpi-dev openmpi-bin
   clang libclang-rt-14-dev
   chromium
 )

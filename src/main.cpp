@@ -1,14 +1,25 @@
 // The caustica command: `caustica render SCENE ...`, `info`, `diff`, `merge` and `compare`.
 #include "cli/commands.h"
+#include "cli/process_group.h"
 #include "core/error.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <exception>
+#include <memory>
 
 int main(int argc, char **argv) {
     using namespace caustica;
+    // Started by mpirun (or srun), the processes render together (cli/process_group.h).
+    std::unique_ptr<ProcessGroup> group;
+    try {
+        group = join_process_group(&argc, &argv);
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
+    }
+    const bool root = group->rank() == 0;
     CLI::App app{"Caustica: a spectral bidirectional renderer for pbrt-v4 scenes"};
     app.require_subcommand(1);
 
@@ -92,20 +103,29 @@ int main(int argc, char **argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
-        int code = app.exit(e);
+        int code = root ? app.exit(e) : e.get_exit_code();
         return code == 0 ? 0 : 2;
     }
 
     try {
+        if (group->ranks() > 1 && !*render_cmd)
+            throw InputError("only `caustica render` runs across the processes of an MPI job");
+        render.group = group.get();
         if (*render_cmd) return run_render(render);
         if (*info_cmd) return run_info(info_scene);
         if (*diff_cmd) return run_diff(diff);
         if (*merge_cmd) return run_merge(merge);
         if (*compare_cmd) return run_compare(compare);
     } catch (const InputError &e) {
-        std::fprintf(stderr, "%s\n", e.what());
+        // Every rank reads the same input, so every rank meets the same error: rank 0 reports it.
+        if (root) std::fprintf(stderr, "%s\n", e.what());
         return 2;
     } catch (const std::exception &e) {
+        // A failure on one rank, which the others may be waiting for: it ends the whole job.
+        if (group->ranks() > 1) {
+            std::fprintf(stderr, "caustica (MPI rank %d of %d): %s\n", group->rank(), group->ranks(), e.what());
+            group->abort(1);
+        }
         std::fprintf(stderr, "caustica: %s\n", e.what());
         return 1;
     }

@@ -42,12 +42,16 @@ struct IterationRenderer::Threads {
 };
 
 IterationRenderer::IterationRenderer(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
-                                     const ProgressCallback &progress)
-    : scene_(scene), budget_(budget), stats_(stats), progress_(progress),
+                                     const ProgressCallback &progress, Sharing sharing)
+    : scene_(scene), budget_(budget), stats_(stats), progress_(progress), share_(budget.sharing()),
+      share_pixels_(sharing == Sharing::PixelsAndPaths && share_.ranks() > 1),
       start_(std::chrono::steady_clock::now()), seconds_before_(stats.seconds),
       threads_(std::make_unique<Threads>(scene)) {
     const PixelBounds &bounds = scene.film->pixel_bounds();
     pixel_count_ = size_t(bounds.width()) * bounds.height();
+    owned_pixel_count_ = 0;
+    for (int y = bounds.min.y; y < bounds.max.y; ++y)
+        for (int x = bounds.min.x; x < bounds.max.x; ++x) owned_pixel_count_ += owns({x, y}) ? 1 : 0;
     for (int y = bounds.min.y; y < bounds.max.y; y += kTileSize)
         for (int x = bounds.min.x; x < bounds.max.x; x += kTileSize)
             threads_->tiles.push_back(
@@ -55,6 +59,20 @@ IterationRenderer::IterationRenderer(const Scene &scene, const RenderBudget &bud
 }
 
 IterationRenderer::~IterationRenderer() { flush_counters(); }
+
+namespace {
+
+// The tile (kTileSize square, row by row over the bounds) a pixel lies in.
+size_t tile_of(const PixelBounds &bounds, Vec2i pixel) {
+    const size_t tiles_per_row = size_t((bounds.width() + kTileSize - 1) / kTileSize);
+    return size_t((pixel.y - bounds.min.y) / kTileSize) * tiles_per_row + size_t((pixel.x - bounds.min.x) / kTileSize);
+}
+
+} // namespace
+
+bool IterationRenderer::owns(Vec2i pixel) const {
+    return !share_pixels_ || tile_of(scene_.film->pixel_bounds(), pixel) % share_.ranks() == size_t(share_.rank());
+}
 
 float IterationRenderer::time(int iteration) const {
     const Shutter *shutter = scene_.motion_shutter();
@@ -84,23 +102,33 @@ double IterationRenderer::elapsed() const {
 void IterationRenderer::run(const std::function<bool(int)> &iteration) {
     const bool timed = budget_.seconds > 0;
     const int cap = budget_.spp > 0 ? budget_.spp : (timed ? INT_MAX : 1);
+    // Sharing iterations, a round gives each rank one; otherwise a round is one iteration.
+    const int per_round = share_pixels_ ? 1 : share_.ranks();
+    const int rank_offset = share_pixels_ ? 0 : share_.rank();
     int done = stats_.samples_per_pixel;
     while (done < cap) {
-        // With a time limit, an iteration is only started if it is expected to finish in time
-        // (its cost estimated from the iterations so far); the first one always runs.
-        if (timed && done > 0 && elapsed() + elapsed() / done > budget_.seconds) break;
-        const bool completed = iteration(done);
+        // With a time limit, a round is only started if it is expected to finish in time (its
+        // cost estimated from the iterations so far, on rank 0's clock); the first one always
+        // runs.
+        if (share_.agree(timed && done > 0 && elapsed() + elapsed() / done * per_round > budget_.seconds)) break;
+        const int mine = done + rank_offset;
+        const bool completed = mine >= cap || iteration(mine);
         for (ThreadState &ts : threads_->states) ts.iteration_scratch->reset();
-        if (!completed) {
+        const int completed_in_round = int(share_.sum(completed && mine < cap ? 1 : 0));
+        const bool round_complete = !share_.any(!completed);
+        // Iterations are counted as done only in whole rounds: an iteration another rank cut short
+        // leaves its round unfinished, and its completed ones are in the film but not counted.
+        if (!round_complete) {
             stats_.interrupted = true;
             break;
         }
-        ++done;
-        stats_.pixel_samples += pixel_count_;
+        done += share_pixels_ ? 1 : completed_in_round;
+        // This rank's pixel samples (the ranks' are added up when the render ends).
+        if (mine < cap) stats_.pixel_samples += share_pixels_ ? owned_pixel_count_ : pixel_count_;
         stats_.samples_per_pixel = done;
         flush_counters();
         if (budget_.at_boundary) budget_.at_boundary();
-        if (cancelled()) {
+        if (share_.any(cancelled())) {
             stats_.interrupted = true;
             break;
         }
@@ -117,6 +145,7 @@ bool IterationRenderer::for_each_pixel(int iteration, int dimension, const Itera
     const size_t width = size_t(bounds.width());
     std::atomic<bool> stopped{false};
     tbb::parallel_for(size_t(0), threads_->tiles.size(), [&](size_t t) {
+        if (share_pixels_ && t % share_.ranks() != size_t(share_.rank())) return;
         ThreadState &ts = threads_->states.local();
         IterationPixelContext ctx{*ts.sampler, *ts.sample_scratch, *ts.iteration_scratch, ts.rays,
                                   ts.non_finite};
@@ -147,6 +176,7 @@ bool IterationRenderer::for_each_path(int iteration, size_t path_count, int dime
     constexpr size_t kChunk = 256;
     std::atomic<bool> stopped{false};
     tbb::parallel_for(size_t(0), (path_count + kChunk - 1) / kChunk, [&](size_t chunk) {
+        if (share_pixels_ && chunk % share_.ranks() != size_t(share_.rank())) return;
         ThreadState &ts = threads_->states.local();
         IterationPixelContext ctx{*ts.sampler, *ts.sample_scratch, *ts.iteration_scratch, ts.rays,
                                   ts.non_finite};

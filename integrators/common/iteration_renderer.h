@@ -6,6 +6,13 @@
 // A pass visits the film's pixels in tiles over oneTBB. Every pixel's random numbers depend only
 // on (pixel, iteration, first sampler dimension, seed), so results do not depend on threads, nor
 // on whether the render was resumed from a checkpoint taken between iterations.
+//
+// A distributed render (RenderShare) shares the work in one of two ways:
+//  - whole iterations (bpm, vcm: iterations are independent): rank r renders iterations
+//    n + r, n + N + r, ... Nothing is exchanged until the film is reduced at the end;
+//  - each iteration's pixels and paths (sppm, whose pixels carry statistics from one iteration
+//    to the next): every rank runs every iteration, but its passes visit only its own tiles and
+//    light paths; the integrator exchanges what the passes share (the photons).
 #pragma once
 
 #include "core/scratch_buffer.h"
@@ -37,13 +44,15 @@ using IterationPixelFunction = std::function<void(Vec2i pixel, size_t pixel_inde
 
 class IterationRenderer {
   public:
+    enum class Sharing { Iterations, PixelsAndPaths };
     IterationRenderer(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
-                      const ProgressCallback &progress);
+                      const ProgressCallback &progress, Sharing sharing = Sharing::Iterations);
     ~IterationRenderer();
 
     // Calls iteration(i) for i = n, n + 1, ... from the n iterations the stats count as done
     // (0, or those of a resumed render) until the budget's iteration count or time is used up
     // or the render is cancelled; iteration() returns false when it was cancelled part-way.
+    // Sharing iterations, each rank is given only its own i.
     // Fills in stats.samples_per_pixel (completed iterations), pixel_samples, seconds and
     // interrupted, and calls the budget's at_boundary after every completed iteration.
     void run(const std::function<bool(int iteration)> &iteration);
@@ -58,6 +67,9 @@ class IterationRenderer {
                        const std::function<void(size_t index, IterationPixelContext &ctx)> &work);
 
     size_t pixel_count() const { return pixel_count_; }
+    // Whether this rank's passes visit the pixel (every pixel unless pixels are shared).
+    bool owns(Vec2i pixel) const;
+    const RenderShare &share() const { return share_; }
 
     // The time within the shutter (geometry/ray.h) of every path of the iteration, camera and
     // light alike, so that connections and merges join paths of one time: the scene's sampler at
@@ -76,7 +88,9 @@ class IterationRenderer {
     const RenderBudget &budget_;
     RenderStats &stats_;
     const ProgressCallback &progress_;
-    size_t pixel_count_;
+    const RenderShare &share_;
+    const bool share_pixels_;
+    size_t pixel_count_, owned_pixel_count_;
     std::chrono::steady_clock::time_point start_;
     double seconds_before_; // of the render this one resumes
     struct Threads;

@@ -98,9 +98,13 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
     };
 
     auto cancelled = [&] { return budget.cancel && budget.cancel->load(std::memory_order_relaxed); };
+    // A distributed render deals each wave's (tile, sample index) pairs out to the ranks in turn,
+    // so that even a one-sample wave is shared; rank 0's clock decides the waves' sizes.
+    const RenderShare &share = budget.sharing();
+    const int rank = share.rank(), ranks = share.ranks();
     std::atomic<uint64_t> tiles_done{0};
     int done = stats.samples_per_pixel;
-    while (done < spp_cap && !(timed && elapsed() >= budget.seconds)) {
+    while (done < spp_cap && !share.agree(timed && elapsed() >= budget.seconds)) {
         // Sweeps over the image in waves of doubling size (1, 1, 2, 4, ... 64 samples per
         // pixel), so that an interrupted render holds the whole image at a lower sample count;
         // a time budget sizes its waves from the measured cost per sample instead, so the
@@ -112,6 +116,7 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
             wave = done == 0 ? 1 : int(std::clamp(remaining / std::max(per_spp, 1e-9), 1.0, 64.0));
             wave = std::min(wave, spp_cap - done);
         }
+        wave = int(share.agree(wave));
         const int first = done, end = done + wave;
         tiles_done = 0;
         tbb::parallel_for(size_t(0), tiles.size(), [&](size_t t) {
@@ -123,6 +128,10 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
                     Vec2i pixel{x, y};
                     int &pixel_taken = taken[size_t(y - bounds.min.y) * bounds.width() + (x - bounds.min.x)];
                     for (int s = std::max(first, pixel_taken); s < end; ++s) {
+                        if (ranks > 1 && (uint64_t(s - first) * tiles.size() + t) % ranks != uint64_t(rank)) {
+                            pixel_taken = s + 1; // another rank's
+                            continue;
+                        }
                         // Checked per sample so an interruption is honoured within one sample's
                         // time; the film normalises each pixel by its own weight, so pixels with
                         // fewer samples are still correct.
@@ -142,15 +151,18 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
         });
         // Cancellation is only checked before a sample, so a wave may be complete even when
         // the render was cancelled.
-        const bool stopped = cancelled();
-        const bool complete = !stopped || std::all_of(taken.begin(), taken.end(), [end](int n) { return n >= end; });
+        const bool stopped = share.any(cancelled());
+        const bool complete =
+            !share.any(stopped && !std::all_of(taken.begin(), taken.end(), [end](int n) { return n >= end; }));
         if (complete) done = end;
         flush_counters();
         stats.samples_per_pixel = done;
         if (stopped) {
             stats.interrupted = true;
-            if (!complete) stats.pixel_sample_counts = taken;
-            if (budget.at_boundary) budget.at_boundary();
+            if (!complete && ranks == 1) stats.pixel_sample_counts = taken;
+            // The ranks' shares of a wave cut short are not each pixel's first samples: their
+            // state cannot be continued, so it is not offered for a checkpoint.
+            if (budget.at_boundary && (complete || ranks == 1)) budget.at_boundary();
             break;
         }
         if (budget.at_boundary) budget.at_boundary();

@@ -362,6 +362,9 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     Film &film = *scene.film;
     const PixelBounds &bounds = film.pixel_bounds();
     std::vector<PixelState> pixels(size_t(bounds.width()) * bounds.height());
+    auto pixel_at = [&](size_t index) {
+        return Vec2i{bounds.min.x + int(index % size_t(bounds.width())), bounds.min.y + int(index / size_t(bounds.width()))};
+    };
     // A resumed render continues from the restored estimates.
     if (stats.samples_per_pixel == 0) {
         PixelEstimate initial;
@@ -384,9 +387,13 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         medium_maps.emplace_back(photon_search_, photon_blocks);
     }
     int iterations = 0;
+    std::vector<bool> owned(pixels.size()); // whether this rank's passes visit a pixel
 
     {
-        IterationRenderer renderer(scene, budget, stats, progress);
+        // A pixel's statistics depend on the iterations before, so a distributed render shares
+        // each iteration: its pixels and its photons, which every rank then gathers.
+        IterationRenderer renderer(scene, budget, stats, progress, IterationRenderer::Sharing::PixelsAndPaths);
+        for (size_t index = 0; index < pixels.size(); ++index) owned[index] = renderer.owns(pixel_at(index));
         renderer.run([&](int iteration) {
             groups.start_iteration(scene, iteration, pixels.size(), photon_count);
             // Visible points and photons of one iteration share its time, so that they meet.
@@ -413,7 +420,7 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                     film.add_bucket_values(L, lambda, state.direct_buckets.data());
                 }
             });
-            if (!completed) return false;
+            if (renderer.share().any(!completed)) return false;
 
             // Photon pass, then the groups' maps, independent of each other: indexed in parallel
             // (one after another, they kept the second thread idle for a tenth of the render).
@@ -426,12 +433,20 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 const int g = groups.group_of_light_path(index);
                 trace_photon(scene, max_depth_, groups.wavelengths(g), time, ctx, surface_maps[g], medium_maps[g]);
             });
-            if (!completed) return false;
-            float max_surface_radius = 0, max_medium_radius = 0;
-            for (const PixelEstimate &estimate : estimates_) {
-                max_surface_radius = std::max(max_surface_radius, estimate.surface.radius);
-                max_medium_radius = std::max(max_medium_radius, estimate.medium.radius);
+            if (renderer.share().any(!completed)) return false;
+            for (int g = 0; g < groups.count(); ++g) {
+                surface_maps[g].gather(renderer.share());
+                medium_maps[g].gather(renderer.share());
             }
+            // The grids are laid out for the largest radius (of every rank's pixels).
+            float max_surface_radius = 0, max_medium_radius = 0;
+            for (size_t index = 0; index < estimates_.size(); ++index) {
+                if (!owned[index]) continue;
+                max_surface_radius = std::max(max_surface_radius, estimates_[index].surface.radius);
+                max_medium_radius = std::max(max_medium_radius, estimates_[index].medium.radius);
+            }
+            max_surface_radius = renderer.share().max(max_surface_radius);
+            max_medium_radius = renderer.share().max(max_medium_radius);
             tbb::parallel_for(0, groups.count(), [&](int g) {
                 surface_maps[g].build(max_surface_radius);
                 medium_maps[g].build(max_medium_radius);
@@ -495,6 +510,7 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 return film.sensor_value(flux, vp.lambda) * group_scale;
             };
             tbb::parallel_for(size_t(0), pixels.size(), [&](size_t index) {
+                if (!owned[index]) return;
                 const PixelState &state = pixels[index];
                 PixelEstimate &estimate = estimates_[index];
                 estimate.direct_sum += state.direct;
@@ -538,6 +554,7 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
     size_t index = 0;
     for (int y = bounds.min.y; y < bounds.max.y; ++y)
         for (int x = bounds.min.x; x < bounds.max.x; ++x, ++index) {
+            if (!owned[index]) continue; // another rank's pixel, added by that rank
             const PixelEstimate &estimate = estimates_[index];
             const float r_surface = estimate.surface.radius, r_medium = estimate.medium.radius;
             const double surface_measure = emitted * Pi * sqr(r_surface);

@@ -687,6 +687,9 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             film.add_sample(pixel, L, group_lambda, cs.filter_weight);
         });
     });
+    // The splats of a distributed render are reduced into one film: normalise by every rank's
+    // light paths.
+    light_paths_traced_ = uint64_t(budget.sharing().sum(int64_t(light_paths_traced_)));
 }
 
 // One light path per pixel per iteration, counted as traced (an interrupted iteration included).

@@ -24,7 +24,7 @@ namespace caustica {
 
 namespace {
 
-constexpr const char *kFormatLine = "caustica checkpoint 1";
+constexpr const char *kFormatLine = "caustica checkpoint 2";
 constexpr const char *kEndMarker = "end of checkpoint\n";
 
 // A 64-bit hash of byte strings, to notice that a file has changed (not against tampering):
@@ -231,20 +231,30 @@ RenderFingerprint render_fingerprint(const std::string &scene_path, const SceneD
 
 std::string checkpoint_path(const std::string &output_path) { return output_path + ".checkpoint"; }
 
-void write_checkpoint(const std::string &path, const RenderFingerprint &fingerprint, const RenderSession &session,
-                      const RenderStats &stats) {
+std::string session_state(const RenderSession &session, const RenderStats &stats) {
+    std::ostringstream out;
+    write_stats(out, stats);
+    session.scene->film->save_state(out);
+    std::ostringstream integrator_state;
+    session.integrator->save_state(integrator_state);
+    const std::string state = std::move(integrator_state).str();
+    write_value<uint64_t>(out, state.size());
+    out.write(state.data(), std::streamsize(state.size()));
+    return std::move(out).str();
+}
+
+void write_checkpoint(const std::string &path, const RenderFingerprint &fingerprint,
+                      const std::vector<std::string> &rank_states) {
     const std::string temporary = path + ".tmp";
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         if (!out) throw std::runtime_error("cannot create \"" + temporary + "\": " + std::strerror(errno));
         write_header(out, fingerprint);
-        write_stats(out, stats);
-        session.scene->film->save_state(out);
-        std::ostringstream integrator_state;
-        session.integrator->save_state(integrator_state);
-        const std::string state = std::move(integrator_state).str();
-        write_value<uint64_t>(out, state.size());
-        out.write(state.data(), std::streamsize(state.size()));
+        write_value<uint64_t>(out, rank_states.size());
+        for (const std::string &state : rank_states) {
+            write_value<uint64_t>(out, state.size());
+            out.write(state.data(), std::streamsize(state.size()));
+        }
         out << kEndMarker;
         out.close();
         if (!out) {
@@ -260,8 +270,7 @@ void write_checkpoint(const std::string &path, const RenderFingerprint &fingerpr
     sync_to_disk(directory.empty() ? "." : directory.string(), O_RDONLY | O_DIRECTORY);
 }
 
-void read_checkpoint(const std::string &path, const RenderFingerprint &fingerprint, RenderSession &session,
-                     RenderStats &stats) {
+std::vector<std::string> read_checkpoint(const std::string &path, const RenderFingerprint &fingerprint) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw InputError("--resume: there is no checkpoint \"" + path +
@@ -279,30 +288,23 @@ void read_checkpoint(const std::string &path, const RenderFingerprint &fingerpri
     }
     if (!in) throw damaged("truncated header");
     if (saved.fields != fingerprint.fields) throw InputError(mismatch_message(path, saved, fingerprint));
-
-    const PixelBounds &bounds = session.scene->film->pixel_bounds();
-    const size_t pixel_count = size_t(bounds.width()) * bounds.height();
     try {
-        RenderStats restored;
-        read_stats(in, pixel_count, restored);
-        session.scene->film->restore_state(in);
-        const uint64_t state_size = read_value<uint64_t>(in);
-        std::string state(state_size <= (uint64_t(1) << 40) ? size_t(state_size) : 0, '\0');
-        if (state.size() != state_size) throw std::runtime_error("bad integrator state size");
-        in.read(state.data(), std::streamsize(state.size()));
-        if (!in) throw std::runtime_error("truncated");
-        std::istringstream integrator_state(std::move(state));
-        session.integrator->restore_state(integrator_state);
+        const uint64_t ranks = read_value<uint64_t>(in);
+        if (!in || ranks == 0 || ranks > (uint64_t(1) << 24)) throw std::runtime_error("bad rank count");
+        std::vector<std::string> states;
+        for (uint64_t r = 0; r < ranks; ++r) {
+            const uint64_t size = read_value<uint64_t>(in);
+            std::string state(size <= (uint64_t(1) << 40) ? size_t(size) : 0, '\0');
+            if (state.size() != size) throw std::runtime_error("bad state size");
+            in.read(state.data(), std::streamsize(state.size()));
+            if (!in) throw std::runtime_error("truncated");
+            states.push_back(std::move(state));
+        }
         std::string end(std::strlen(kEndMarker), '\0');
         in.read(end.data(), std::streamsize(end.size()));
         if (!in || end != kEndMarker || in.peek() != std::char_traits<char>::eof())
             throw std::runtime_error("no end marker");
-        stats.samples_per_pixel = restored.samples_per_pixel;
-        stats.pixel_samples = restored.pixel_samples.load();
-        stats.rays = restored.rays.load();
-        stats.non_finite_samples = restored.non_finite_samples.load();
-        stats.seconds = restored.seconds;
-        stats.pixel_sample_counts = std::move(restored.pixel_sample_counts);
+        return states;
     } catch (const std::runtime_error &e) {
         throw damaged(e.what());
     } catch (const std::bad_alloc &) {
@@ -310,25 +312,83 @@ void read_checkpoint(const std::string &path, const RenderFingerprint &fingerpri
     }
 }
 
+void restore_session_state(const std::string &state, RenderSession &session, RenderStats &stats) {
+    std::istringstream in(state);
+    const PixelBounds &bounds = session.scene->film->pixel_bounds();
+    const size_t pixel_count = size_t(bounds.width()) * bounds.height();
+    RenderStats restored;
+    read_stats(in, pixel_count, restored);
+    session.scene->film->restore_state(in);
+    const uint64_t state_size = read_value<uint64_t>(in);
+    std::string integrator(state_size <= (uint64_t(1) << 40) ? size_t(state_size) : 0, '\0');
+    if (integrator.size() != state_size) throw std::runtime_error("bad integrator state size");
+    in.read(integrator.data(), std::streamsize(integrator.size()));
+    if (!in || in.peek() != std::char_traits<char>::eof()) throw std::runtime_error("truncated");
+    std::istringstream integrator_state(std::move(integrator));
+    session.integrator->restore_state(integrator_state);
+    stats.samples_per_pixel = restored.samples_per_pixel;
+    stats.pixel_samples = restored.pixel_samples.load();
+    stats.rays = restored.rays.load();
+    stats.non_finite_samples = restored.non_finite_samples.load();
+    stats.seconds = restored.seconds;
+    stats.pixel_sample_counts = std::move(restored.pixel_sample_counts);
+}
+
+void resume_from_checkpoint(const std::string &path, const RenderFingerprint &fingerprint, const ProcessGroup &group,
+                            RenderSession &session, RenderStats &stats) {
+    // Rank 0 reads the file; every rank learns whether that worked, so that an error ends
+    // every rank the same way rather than leaving the others waiting.
+    std::vector<std::string> states;
+    std::string error;
+    if (group.rank() == 0) {
+        try {
+            states = read_checkpoint(path, fingerprint);
+            if (states.size() != size_t(group.ranks()))
+                throw InputError("checkpoint \"" + path + "\" was written by " + std::to_string(states.size()) +
+                                 " processes, and this render has " + std::to_string(group.ranks()) +
+                                 " (resume with the same number of MPI ranks)");
+        } catch (const InputError &e) {
+            error = e.message();
+        }
+    }
+    std::vector<char> error_bytes(error.begin(), error.end());
+    if (group.rank() != 0) error_bytes.clear();
+    error_bytes = group.gather_all(std::move(error_bytes));
+    if (!error_bytes.empty()) throw InputError(std::string(error_bytes.begin(), error_bytes.end()));
+    const std::string mine = group.scatter_from_root(std::move(states));
+    try {
+        restore_session_state(mine, session, stats);
+    } catch (const std::runtime_error &e) {
+        throw InputError("checkpoint \"" + path + "\" is damaged (" + e.what() + "); delete it to start afresh");
+    } catch (const std::bad_alloc &) {
+        throw InputError("checkpoint \"" + path + "\" is damaged (impossible sizes); delete it to start afresh");
+    }
+}
+
 CheckpointWriter::CheckpointWriter(std::string path, RenderFingerprint fingerprint, double interval,
                                    const RenderSession &session, const RenderStats &stats,
-                                   const std::atomic<bool> *interrupt)
+                                   const std::atomic<bool> *interrupt, const ProcessGroup &group)
     : path_(std::move(path)), fingerprint_(std::move(fingerprint)), interval_(interval), session_(session),
-      stats_(stats), interrupt_(interrupt), last_(std::chrono::steady_clock::now()) {}
+      stats_(stats), interrupt_(interrupt), group_(group), last_(std::chrono::steady_clock::now()) {}
 
 void CheckpointWriter::at_boundary() {
+    // Every rank is at the same boundary: rank 0's clock and signal decide for all.
     const bool interrupted = interrupt_ && interrupt_->load(std::memory_order_relaxed);
     const auto now = std::chrono::steady_clock::now();
-    if (!interrupted && std::chrono::duration<double>(now - last_).count() < interval_) return;
+    bool due = interrupted || std::chrono::duration<double>(now - last_).count() >= interval_;
     // The same state again (a renderer may report it twice): nothing new to save.
-    if (stats_.samples_per_pixel == saved_spp_ && stats_.pixel_samples == saved_pixel_samples_) return;
-    try {
-        write_checkpoint(path_, fingerprint_, session_, stats_);
-        saved_spp_ = stats_.samples_per_pixel;
-        saved_pixel_samples_ = stats_.pixel_samples;
-        saved_partial_ = !stats_.pixel_sample_counts.empty();
-    } catch (const std::runtime_error &e) {
-        warning(std::string(e.what()) + "; the render goes on without this checkpoint");
+    if (stats_.samples_per_pixel == saved_spp_ && stats_.pixel_samples == saved_pixel_samples_) due = false;
+    if (!group_.agree(due)) return;
+    std::vector<std::string> states = group_.gather_to_root(session_state(session_, stats_));
+    if (group_.rank() == 0) {
+        try {
+            write_checkpoint(path_, fingerprint_, states);
+            saved_spp_ = stats_.samples_per_pixel;
+            saved_pixel_samples_ = stats_.pixel_samples;
+            saved_partial_ = !stats_.pixel_sample_counts.empty();
+        } catch (const std::runtime_error &e) {
+            warning(std::string(e.what()) + "; the render goes on without this checkpoint");
+        }
     }
     last_ = std::chrono::steady_clock::now();
 }

@@ -2,15 +2,19 @@
 // render can be continued from after the process was stopped or killed, giving the image an
 // uninterrupted render would have given, bit for bit.
 //
+// A distributed render (cli/process_group.h) keeps every rank's state in one checkpoint, and
+// resumes with the same number of ranks.
+//
 // A checkpoint is taken only where the film and the integrator's state hold exactly the samples
 // the RenderStats count (RenderBudget::at_boundary): between sweeps of samples or photon-mapping
 // iterations, and where an interrupted render stops if that state is consistent (for pt, lt and
 // bdpt it always is: each pixel's own sample count is saved). It holds
 //   - a text header: the format, then the render's fingerprint, one "name value" line each,
 //     ending with an empty line;
-//   - the RenderStats (sample counts, rays, time), the film's accumulators (Film::save_state)
-//     and the integrator's own state (Integrator::save_state), in this machine's binary
-//     representation, and an end marker.
+//   - per process (one, or each MPI rank's): the RenderStats (sample counts, rays, time), the
+//     film's accumulators (Film::save_state) and the integrator's own state
+//     (Integrator::save_state), in this machine's binary representation;
+//   - an end marker.
 // The fingerprint names everything the result depends on: the caustica build, the contents of
 // the scene's files, the integrator, seed, sample count or time budget, resolution, pixel
 // bounds, wavelength options and the variance layer. A render resumes only from a checkpoint
@@ -20,6 +24,7 @@
 // previous one, so that a kill (or a power cut) at any moment leaves a complete checkpoint.
 #pragma once
 
+#include "cli/process_group.h"
 #include "integrators/integrator.h"
 
 #include <atomic>
@@ -47,17 +52,28 @@ RenderFingerprint render_fingerprint(const std::string &scene_path, const SceneD
 // The checkpoint of a render whose image goes to output_path: next to it, "OUT.exr.checkpoint".
 std::string checkpoint_path(const std::string &output_path);
 
-// Writes the session's state as a checkpoint at `path`, replacing any previous one only once
-// the new one is complete and on the disk. Throws std::runtime_error when it cannot.
-void write_checkpoint(const std::string &path, const RenderFingerprint &fingerprint, const RenderSession &session,
-                      const RenderStats &stats);
+// A session's state: its RenderStats, its film's accumulators and its integrator's state.
+std::string session_state(const RenderSession &session, const RenderStats &stats);
+// Restores what session_state wrote into `session` (fresh, of the same render) and `stats`.
+// Throws std::runtime_error if the data does not fit.
+void restore_session_state(const std::string &state, RenderSession &session, RenderStats &stats);
 
-// Restores the film, the integrator's state and the stats of `session` (fresh, with the same
-// fingerprint) from the checkpoint at `path`, after which the render continues where the saved
-// one stopped. Throws InputError when there is no checkpoint, when it belongs to a different
-// render (naming what differs; the session is then unchanged) or is damaged.
-void read_checkpoint(const std::string &path, const RenderFingerprint &fingerprint, RenderSession &session,
-                     RenderStats &stats);
+// Writes a checkpoint of a render's processes (one state each, in rank order; one for a render
+// on its own) at `path`, replacing any previous one only once the new one is complete and on
+// the disk. Throws std::runtime_error when it cannot.
+void write_checkpoint(const std::string &path, const RenderFingerprint &fingerprint,
+                      const std::vector<std::string> &rank_states);
+
+// The states of the checkpoint at `path`, in rank order. Throws InputError when there is no
+// checkpoint, when it belongs to a different render (naming what differs) or is damaged.
+std::vector<std::string> read_checkpoint(const std::string &path, const RenderFingerprint &fingerprint);
+
+// Restores each rank's session and stats from the checkpoint at `path`, after which the render
+// continues where the saved one stopped: rank 0 reads it and hands each rank its state. Throws
+// InputError on every rank as read_checkpoint does, and when the checkpoint has another number
+// of ranks; the session is then unchanged.
+void resume_from_checkpoint(const std::string &path, const RenderFingerprint &fingerprint, const ProcessGroup &group,
+                            RenderSession &session, RenderStats &stats);
 
 // Takes the checkpoints of one render, as its RenderBudget::at_boundary: at the first boundary
 // after `interval` seconds have passed since the last checkpoint (or the start), and at the
@@ -65,8 +81,10 @@ void read_checkpoint(const std::string &path, const RenderFingerprint &fingerpri
 // written is a warning: the render goes on.
 class CheckpointWriter {
   public:
+    // With a group of several processes, every rank calls at_boundary() at the same boundaries,
+    // and rank 0 writes every rank's state.
     CheckpointWriter(std::string path, RenderFingerprint fingerprint, double interval, const RenderSession &session,
-                     const RenderStats &stats, const std::atomic<bool> *interrupt);
+                     const RenderStats &stats, const std::atomic<bool> *interrupt, const ProcessGroup &group);
 
     void at_boundary();
 
@@ -83,6 +101,7 @@ class CheckpointWriter {
     const RenderSession &session_;
     const RenderStats &stats_;
     const std::atomic<bool> *interrupt_;
+    const ProcessGroup &group_;
     std::chrono::steady_clock::time_point last_;
     int saved_spp_ = -1;
     uint64_t saved_pixel_samples_ = 0;

@@ -8,6 +8,8 @@
 
 namespace caustica {
 
+class ProcessGroup;
+
 struct RenderCommandOptions {
     std::string scene_path;
     std::string integrator;     // empty: the scene's Integrator directive
@@ -28,6 +30,8 @@ struct RenderCommandOptions {
     bool quiet = false;
     double checkpoint_seconds = -1; // >= 0: save a checkpoint at most this often (cli/checkpoint.h)
     bool resume = false;            // continue from the output's checkpoint
+    // The processes rendering together (an MPI job); null: this process alone.
+    const ProcessGroup *group = nullptr;
 };
 
 struct DiffCommandOptions {

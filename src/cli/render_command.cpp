@@ -1,5 +1,6 @@
 #include "cli/checkpoint.h"
 #include "cli/commands.h"
+#include "cli/process_group.h"
 #include "cli/progress_reporter.h"
 #include "cli/render_session.h"
 #include "core/error.h"
@@ -51,7 +52,7 @@ double peak_memory_mib() {
     return usage.ru_maxrss / 1024.0; // ru_maxrss is in KiB on Linux
 }
 
-void write_stats_json(const std::string &path, const Scene &scene, const RenderStats &stats, int threads) {
+void write_stats_json(const std::string &path, const Scene &scene, const RenderStats &stats, int threads, int ranks) {
     std::ofstream out(path);
     if (!out) throw std::runtime_error("cannot write statistics to \"" + path + "\"");
     Vec2i res = scene.film->resolution();
@@ -60,6 +61,7 @@ void write_stats_json(const std::string &path, const Scene &scene, const RenderS
         << "  \"integrator\": \"" << scene.integrator_name << "\",\n"
         << "  \"resolution\": [" << res.x << ", " << res.y << "],\n"
         << "  \"threads\": " << threads << ",\n"
+        << "  \"processes\": " << ranks << ",\n"
         << "  \"wall_seconds\": " << stats.seconds << ",\n"
         << "  \"samples_per_pixel\": " << stats.samples_per_pixel << ",\n"
         << "  \"rays\": " << stats.rays.load() << ",\n"
@@ -87,6 +89,11 @@ int run_render(const RenderCommandOptions &options) {
     if (!options.resolution.empty()) parse_resolution(options.resolution, &overrides.width, &overrides.height);
     if (options.wavelength != 0 && (options.wavelength < LambdaMin || options.wavelength > LambdaMax))
         throw InputError("--wavelength must lie in [360, 830] nm");
+    // Several processes (an MPI job) render together; rank 0 reports and writes.
+    const ProcessGroup alone;
+    const ProcessGroup &group = options.group ? *options.group : alone;
+    const bool root = group.rank() == 0;
+    const bool quiet = options.quiet || !root;
 
     SceneDescription description;
     RenderSession session;
@@ -116,6 +123,7 @@ int run_render(const RenderCommandOptions &options) {
     install_interrupt_handlers();
     RenderBudget budget;
     budget.cancel = &interrupt_requested;
+    if (group.ranks() > 1) budget.share = &group;
     budget.spp = scene->sampler->samples_per_pixel();
     budget.seconds = options.seconds;
     if (options.seconds > 0 && options.spp == 0) budget.spp = 0; // time alone decides
@@ -128,17 +136,17 @@ int run_render(const RenderCommandOptions &options) {
         fingerprint = render_fingerprint(options.scene_path, description, *scene, budget, options.variance_layer);
     RenderStats stats;
     if (options.resume) {
-        read_checkpoint(checkpoint, fingerprint, session, stats);
-        if (!options.quiet)
+        resume_from_checkpoint(checkpoint, fingerprint, group, session, stats);
+        if (!quiet)
             std::fprintf(stderr, "resuming from %s: %d samples per pixel done%s\n", checkpoint.c_str(),
                          stats.samples_per_pixel,
                          stats.pixel_sample_counts.empty() ? "" : " (and part of the next sweep)");
-    } else if (checkpointing && std::filesystem::exists(checkpoint)) {
+    } else if (checkpointing && root && std::filesystem::exists(checkpoint)) {
         warning("replacing the checkpoint \"" + checkpoint + "\" of an earlier render (--resume continues from it)");
     }
     std::optional<CheckpointWriter> writer;
     if (checkpointing) {
-        writer.emplace(checkpoint, fingerprint, options.checkpoint_seconds, session, stats, &interrupt_requested);
+        writer.emplace(checkpoint, fingerprint, options.checkpoint_seconds, session, stats, &interrupt_requested, group);
         budget.at_boundary = [&writer] { writer->at_boundary(); };
     }
 
@@ -148,12 +156,16 @@ int run_render(const RenderCommandOptions &options) {
                                    : budget.spp > 0   ? double(stats.samples_per_pixel) / budget.spp
                                                       : 0;
     const uint64_t samples_before = stats.pixel_samples;
-    ProgressReporter progress(!options.quiet);
+    ProgressReporter progress(!quiet);
     session.render(budget, stats, [&](double fraction, uint64_t samples) {
         progress.update(fraction_before < 1 ? (fraction - fraction_before) / (1 - fraction_before) : 1,
                         samples - std::min(samples, samples_before));
     });
     progress.finish();
+    if (group.ranks() > 1) {
+        group.reduce(*scene->film, stats);
+        if (!root) return stats.interrupted ? 128 + int(interrupt_signal) : 0;
+    }
 
     std::map<std::string, std::string> metadata = render_metadata(*scene, stats, options.seed, options.scene_path);
     Image image = session.image(stats, &metadata);
@@ -161,7 +173,7 @@ int run_render(const RenderCommandOptions &options) {
     if (!exr_path.empty())
         write_exr(exr_path, image, metadata, scene->film->save_fp16() ? ExrPixelType::Half : ExrPixelType::Float);
     if (!png_path.empty()) write_png(png_path, image);
-    if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads);
+    if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads, group.ranks());
     // Only once the image is written: a render killed before that can still be resumed.
     if ((checkpointing || options.resume) && !stats.interrupted) std::filesystem::remove(checkpoint);
 
@@ -181,7 +193,7 @@ int run_render(const RenderCommandOptions &options) {
                                  "cannot be saved\n");
         return 128 + int(interrupt_signal);
     }
-    if (!options.quiet) {
+    if (!quiet) {
         std::fprintf(stderr, "rendered %d spp in %.2fs, %.2fM rays/s, %llu non-finite samples dropped\n",
                      stats.samples_per_pixel, stats.seconds,
                      stats.seconds > 0 ? stats.rays / stats.seconds / 1e6 : 0.0,

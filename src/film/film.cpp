@@ -117,8 +117,10 @@ void Film::add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavele
     assert(!L.has_non_finite());
     add_sensor_value(pixel, sensor_value(L, lambda), filter_weight);
     if (spectral_ && pixel_bounds_.contains(pixel)) {
-        double *sums = &bucket_sums_[index(pixel) * spectral_->count()];
-        for_each_bucket_value(L, lambda, [&](int b, double v) { sums[b] += double(filter_weight) * v; });
+        int64_t *sums = &bucket_sums_[index(pixel) * spectral_->count()];
+        bool ok = true;
+        for_each_bucket_value(L, lambda, [&](int b, double v) { ok &= fixed_point::add(sums[b], double(filter_weight) * v); });
+        if (!ok) camera_overflow_ = true;
     }
 }
 
@@ -129,21 +131,23 @@ void Film::add_sensor_value(Vec2i pixel, RGB v, float filter_weight, const doubl
     // iterates the full frame from corrupting memory in release builds.
     if (!pixel_bounds_.contains(pixel)) return;
     Pixel &p = camera_pixels()[index(pixel)];
-    for (int c = 0; c < 3; ++c) p.rgb_sum[c] += double(filter_weight) * v[c];
-    p.weight_sum += filter_weight;
+    bool ok = true;
+    for (int c = 0; c < 3; ++c) ok &= fixed_point::add(p.rgb_sum[c], double(filter_weight) * v[c]);
+    ok &= fixed_point::add(p.weight_sum, filter_weight);
     if (spectral_ && bucket_values) {
-        double *sums = &bucket_sums_[index(pixel) * spectral_->count()];
-        for (int b = 0; b < spectral_->count(); ++b) sums[b] += double(filter_weight) * bucket_values[b];
+        int64_t *sums = &bucket_sums_[index(pixel) * spectral_->count()];
+        for (int b = 0; b < spectral_->count(); ++b) ok &= fixed_point::add(sums[b], double(filter_weight) * bucket_values[b]);
     }
     if (!moments_.empty()) {
         RGB out = monochromatic_ ? v : output_from_sensor_ * v;
         Moments &m = moments_[index(pixel)];
         for (int c = 0; c < 3; ++c) {
-            m.sum[c] += out[c];
-            m.sum_sq[c] += double(out[c]) * out[c];
+            ok &= fixed_point::add(m.sum[c], out[c]);
+            ok &= fixed_point::add(m.sum_sq[c], double(out[c]) * out[c]);
         }
         ++m.count;
     }
+    if (!ok) camera_overflow_ = true;
 }
 
 void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda) {
@@ -174,7 +178,8 @@ Image Film::get_image(double splat_scale, std::map<std::string, std::string> *me
             double sensor[3] = {0, 0, 0};
             if (!pixels_.empty()) {
                 const Pixel &p = pixels_[i];
-                for (int c = 0; c < 3; ++c) sensor[c] = p.weight_sum != 0 ? p.rgb_sum[c] / p.weight_sum : 0;
+                for (int c = 0; c < 3; ++c)
+                    sensor[c] = p.weight_sum != 0 ? fixed_point::value(p.rgb_sum[c]) / fixed_point::value(p.weight_sum) : 0;
             }
             if (!splats.empty())
                 for (int c = 0; c < 3; ++c) {
@@ -199,6 +204,8 @@ Image Film::get_image(double splat_scale, std::map<std::string, std::string> *me
     if (splats_.take_overflow())
         warning("light-tracing contributions exceeded the film's fixed-point range; the image "
                 "is wrong where they landed");
+    if (camera_overflow_.exchange(false))
+        warning("camera samples exceeded the film's fixed-point range; the image is wrong where they were taken");
     return image;
 }
 
@@ -229,7 +236,8 @@ void Film::add_bucket_channels(Image &image, double splat_scale, std::map<std::s
         Image::Channel channel{spectral_->channel_name(b), std::vector<float>(pixels, 0.f)};
         for (size_t i = 0; i < pixels; ++i) {
             double value = 0;
-            if (!pixels_.empty() && pixels_[i].weight_sum != 0) value = bucket_sums_[i * n + b] / pixels_[i].weight_sum;
+            if (!pixels_.empty() && pixels_[i].weight_sum != 0)
+                value = fixed_point::value(bucket_sums_[i * n + b]) / fixed_point::value(pixels_[i].weight_sum);
             if (!splats.empty()) value += splat_scale * double(splats[i * n + b]) * SplatBuffer::kUnit / filter_integral_;
             channel.values[i] = float(value * CIE_Y_integral);
         }
@@ -295,7 +303,7 @@ void Film::restore_state(std::istream &in) {
     read_array(in, splats, pixel_count() * 3, true);
     const uint64_t overflow = read_u64(in);
     if (!in || overflow > 1) throw std::runtime_error("film state: truncated");
-    std::vector<double> bucket_sums;
+    std::vector<int64_t> bucket_sums;
     std::vector<int64_t> bucket_splats;
     uint64_t bucket_overflow = 0;
     if (spectral_) {
@@ -312,11 +320,66 @@ void Film::restore_state(std::istream &in) {
     splats_.restore(std::move(splats));
     splats_.set_overflow(overflow != 0);
     if (spectral_) {
-        if (bucket_sums.empty() && !bucket_sums_.empty()) bucket_sums.assign(bucket_sums_.size(), 0.0);
+        if (bucket_sums.empty() && !bucket_sums_.empty()) bucket_sums.assign(bucket_sums_.size(), 0);
         bucket_sums_ = std::move(bucket_sums);
         bucket_splats_->restore(std::move(bucket_splats));
         bucket_splats_->set_overflow(bucket_overflow != 0);
     }
+}
+
+namespace {
+
+// Adds b to a element by element (a store never written is empty, and then takes b), with the
+// integer additions of fixed_point.h; returns false on overflow.
+template <typename T> bool add_sums(std::vector<T> &a, const std::vector<T> &b) {
+    if (b.empty()) return true;
+    if (a.empty()) a.assign(b.size(), T{});
+    bool ok = true;
+    for (size_t i = 0; i < b.size(); ++i) ok &= !__builtin_add_overflow(a[i], b[i], &a[i]);
+    return ok;
+}
+
+} // namespace
+
+void Film::add_state(std::istream &in) {
+    std::vector<Pixel> pixels;
+    read_array(in, pixels, pixel_count(), true);
+    std::vector<Moments> moments;
+    read_array(in, moments, moments_.size());
+    std::vector<int64_t> splats;
+    read_array(in, splats, pixel_count() * 3, true);
+    const uint64_t overflow = read_u64(in);
+    if (!in || overflow > 1) throw std::runtime_error("film state: truncated");
+    if (overflow) splats_.set_overflow(true);
+    bool ok = true;
+    if (!pixels.empty()) {
+        Pixel *mine = camera_pixels();
+        for (size_t i = 0; i < pixels.size(); ++i) {
+            for (int c = 0; c < 3; ++c) ok &= !__builtin_add_overflow(mine[i].rgb_sum[c], pixels[i].rgb_sum[c], &mine[i].rgb_sum[c]);
+            ok &= !__builtin_add_overflow(mine[i].weight_sum, pixels[i].weight_sum, &mine[i].weight_sum);
+        }
+    }
+    for (size_t i = 0; i < moments.size(); ++i) {
+        Moments &m = moments_[i];
+        for (int c = 0; c < 3; ++c) {
+            ok &= !__builtin_add_overflow(m.sum[c], moments[i].sum[c], &m.sum[c]);
+            ok &= !__builtin_add_overflow(m.sum_sq[c], moments[i].sum_sq[c], &m.sum_sq[c]);
+        }
+        m.count += moments[i].count;
+    }
+    splats_.add_sums(splats);
+    if (spectral_) {
+        std::vector<int64_t> bucket_sums, bucket_splats;
+        read_array(in, bucket_sums, pixel_count() * spectral_->count(), true);
+        read_array(in, bucket_splats, pixel_count() * spectral_->count(), true);
+        const uint64_t bucket_overflow = read_u64(in);
+        if (!in || bucket_overflow > 1) throw std::runtime_error("film state: truncated");
+        if (!bucket_sums.empty()) camera_pixels();
+        ok &= add_sums(bucket_sums_, bucket_sums);
+        bucket_splats_->add_sums(bucket_splats);
+        if (bucket_overflow) bucket_splats_->set_overflow(true);
+    }
+    if (!ok) camera_overflow_ = true;
 }
 
 CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter, const Shutter *shutter) {

@@ -3,11 +3,14 @@
 // Camera samples (add_sample) go to the pixel they were taken for, weighted by their filter
 // weight (see filter.h); a pixel's value is the weighted average. Tiles of pixels are rendered
 // by different threads, so add_sample needs no locking: each pixel is only ever written by the
-// thread rendering its tile, and its samples arrive in a fixed order.
+// thread rendering its tile.
 //
 // Light-tracing contributions (add_splat) can land anywhere, from any thread: SplatBuffer
-// (splat_buffer.h) sums them exactly, so that the image does not depend on the number of
-// threads, in memory that does not grow with it.
+// (splat_buffer.h) sums them, in memory that does not grow with the number of threads.
+//
+// Every store sums in fixed point (fixed_point.h), so a pixel's sums do not depend on the order
+// its samples were added in: the image is the same whatever the threads, and the stores of
+// processes that shared a render's samples add up exactly to one process's (add_state).
 //
 // Each store is allocated when it is first written (a checkpoint restores it as it was): a
 // light tracer never adds camera samples, and a path tracer never splats, so each needs only
@@ -33,6 +36,7 @@
 #include "camera/camera.h"
 #include "core/error.h"
 #include "film/filter.h"
+#include "film/fixed_point.h"
 #include "film/image.h"
 #include "film/image_io.h"
 #include "film/pixel_sensor.h"
@@ -147,25 +151,30 @@ class Film {
     // them while nothing is being added.
     void save_state(std::ostream &out) const;
     void restore_state(std::istream &in);
+    // Adds what save_state wrote, from a film of the same scene, to this film's stores: the
+    // samples of both are then this film's, as if it had taken them all. Throws
+    // std::runtime_error if the data does not fit.
+    void add_state(std::istream &in);
 
   private:
     size_t index(Vec2i pixel) const {
         return size_t(pixel.y - pixel_bounds_.min.y) * pixel_bounds_.width() + (pixel.x - pixel_bounds_.min.x);
     }
 
+    // Fixed-point sums (fixed_point.h) of the weighted values and of the weights.
     struct Pixel {
-        double rgb_sum[3] = {0, 0, 0};
-        double weight_sum = 0;
+        int64_t rgb_sum[3] = {0, 0, 0};
+        int64_t weight_sum = 0;
     };
     struct Moments {
-        double sum[3] = {0, 0, 0}, sum_sq[3] = {0, 0, 0};
+        fixed_point::Wide sum[3] = {0, 0, 0}, sum_sq[3] = {0, 0, 0};
         uint64_t count = 0;
         // Channel c's sample variance s^2 (count >= 2) and mean.
         double sample_variance(int c) const {
             const double m = mean(c);
-            return std::max(0.0, (sum_sq[c] - count * m * m) / (count - 1));
+            return std::max(0.0, (fixed_point::value(sum_sq[c]) - count * m * m) / (count - 1));
         }
-        double mean(int c) const { return sum[c] / count; }
+        double mean(int c) const { return fixed_point::value(sum[c]) / count; }
     };
 
     Vec2i full_resolution_;
@@ -198,7 +207,9 @@ class Film {
     Pixel *camera_pixels();
 
     std::vector<Pixel> pixels_;
-    std::vector<double> bucket_sums_; // a spectral film's, per pixel, with pixels_
+    std::vector<int64_t> bucket_sums_; // a spectral film's, per pixel, with pixels_
+    // Whether a camera sample's sum left the fixed-point range (reported with the image).
+    mutable std::atomic<bool> camera_overflow_{false};
     std::once_flag pixels_allocated_;
     std::vector<Moments> moments_; // empty unless enable_variance()
     // Mutable: making an image or a checkpoint first adds the queued splats to the sums, which

@@ -7,8 +7,6 @@ namespace caustica {
 
 namespace {
 
-constexpr double kLimit = 0x1p62; // largest single contribution, in units
-
 // The pixels whose centres lie within the filter's radius r of p: [lo, hi) on one axis.
 std::pair<int, int> footprint(float p, float r, int min, int max) {
     const float discrete = p + 0.5f;
@@ -80,9 +78,9 @@ void SplatBuffer::apply(int band, std::vector<Pending> &queue) {
                 int64_t *sum = &row[size_t(x - min_.x) * channels_];
                 for (int i = 0; i < s.v.count; ++i) {
                     double units = std::nearbyint(double(w) * units_per_weight[i]);
-                    if (std::abs(units) > kLimit) {
+                    if (std::abs(units) > fixed_point::kLimit) {
                         overflow = true;
-                        units = std::copysign(kLimit, units);
+                        units = std::copysign(fixed_point::kLimit, units);
                     }
                     int64_t &channel_sum = sum[s.v.channel[i]];
                     if (__builtin_add_overflow(channel_sum, int64_t(units), &channel_sum)) overflow = true;
@@ -104,6 +102,16 @@ void SplatBuffer::restore(std::vector<int64_t> sums) {
     queues_.clear();
     if (sums.empty() && !sums_.empty()) sums.assign(sums_.size(), 0);
     sums_ = std::move(sums);
+}
+
+void SplatBuffer::add_sums(const std::vector<int64_t> &sums) {
+    if (sums.empty()) return;
+    flush();
+    allocate_sums();
+    bool overflow = false;
+    for (size_t i = 0; i < sums.size(); ++i)
+        if (__builtin_add_overflow(sums_[i], sums[i], &sums_[i])) overflow = true;
+    if (overflow) overflow_ = true;
 }
 
 } // namespace caustica

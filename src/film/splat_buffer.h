@@ -1,12 +1,9 @@
 // The film's store of light-tracing contributions ("splats"): values that land anywhere on the
 // image, from any thread, each spread over the pixels within the filter's radius.
 //
-// Exact and order-independent: the sums are kept in 64-bit fixed point (2^-28 units), and
-// integer addition is associative, so the image is bit-identical whatever order the splats
-// arrive in, and so for any number of threads (floating-point sums would not be). The unit is
-// small enough that rounding is ~1e-8 of a typical contribution, and the range (±3.4e10 per
-// pixel and channel) is far above any pixel value times any realistic sample count; exceeding it
-// is detected (overflowed()).
+// Exact and order-independent: the sums are kept in 64-bit fixed point (fixed_point.h), so the
+// image is bit-identical whatever order the splats arrive in, and so for any number of threads
+// or processes. Exceeding the range is detected (overflowed()).
 //
 // Each pixel has a fixed number of channels (3 for RGB, or a spectral film's buckets), and a
 // splat adds up to four values, each to one channel: an RGB value, or a spectral sample's four
@@ -24,6 +21,7 @@
 
 #include "core/vecmath.h"
 #include "film/filter.h"
+#include "film/fixed_point.h"
 #include "spectral/color.h"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -67,9 +65,13 @@ class SplatBuffer {
     // point, or empty if nothing was ever splatted.
     const std::vector<int64_t> &sums() const { return sums_; }
     int channels() const { return channels_; }
-    static constexpr double kUnit = 0x1p-28;
+    static constexpr double kUnit = fixed_point::kUnit;
     // Replaces the sums (a checkpoint's; empty or channels() per pixel) and drops what is queued.
     void restore(std::vector<int64_t> sums);
+    // Adds another buffer's sums over the same bounds (empty, or channels() per pixel), as
+    // sums() gives them: the reduction of the ranks of a distributed render. Call it while no
+    // thread is adding.
+    void add_sums(const std::vector<int64_t> &sums);
 
     // Whether a sum left the fixed-point range since the flag was last taken; take_overflow()
     // also clears it.

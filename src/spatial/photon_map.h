@@ -18,6 +18,7 @@
 // are left out. Points, centers and radii are assumed finite; at most 2^32 - 1 photons.
 #pragma once
 
+#include "integrators/integrator.h"
 #include "spatial/block_storage.h"
 #include "spatial/flann_kd_tree.h"
 #include "spatial/hash_grid.h"
@@ -28,6 +29,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -55,6 +57,22 @@ template <class Record> class PhotonMap {
     void clear() { storage_.clear(); }
     // Safe from any number of threads at once, between clear() and build().
     void add(Vec3f p, const Record &record) { storage_.push_back(Photon{p, record}); }
+    // A distributed render: replaces the photons this rank added since clear() with those every
+    // rank added (RenderShare::gather_all; collective), so that each rank's map holds them all.
+    // The queries see the same photons in the same order as in one process's map.
+    void gather(const RenderShare &share) {
+        if (share.ranks() == 1) return;
+        storage_.close();
+        std::vector<char> mine(storage_.size() * sizeof(Photon));
+        for (size_t i = 0; i < storage_.size(); ++i) std::memcpy(&mine[i * sizeof(Photon)], &storage_[i], sizeof(Photon));
+        const std::vector<char> all = share.gather_all(std::move(mine));
+        storage_.clear();
+        for (size_t offset = 0; offset + sizeof(Photon) <= all.size(); offset += sizeof(Photon)) {
+            Photon photon;
+            std::memcpy(&photon, &all[offset], sizeof(Photon));
+            storage_.push_back(photon);
+        }
+    }
     // Indexes the photons added since clear() for queries of radius at most max_radius.
     void build(float max_radius) {
         storage_.close();

@@ -4,69 +4,21 @@
 //
 // The expectations are independent of the code's output: the uninterrupted render of the same
 // command line is the reference, and it must be matched bit for bit, since every sample's
-// random numbers depend only on (pixel, sample index, seed), each pixel's samples are summed in
-// index order, splats in order-independent fixed point, and photon-mapping state is saved
-// exactly (see cli/checkpoint.h). The stopped renders run on one thread, the references on all:
-// the result must not depend on it.
-#include "../integrators/render_test_support.h"
+// random numbers depend only on (pixel, sample index, seed), the film sums in order-independent
+// fixed point, and photon-mapping state is saved exactly (see cli/checkpoint.h). The stopped
+// renders run on one thread, the references on all: the result must not depend on it.
+#include "process_test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <csignal>
-#include <cstring>
-#include <fcntl.h>
 #include <filesystem>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <thread>
-#include <unistd.h>
-
-extern char **environ;
 
 using namespace caustica::testing;
 namespace fs = std::filesystem;
 
 namespace {
-
-pid_t start_caustica(std::vector<std::string> args, const std::string &log) {
-    args.insert(args.begin(), CAUSTICA_BINARY);
-    std::vector<char *> argv;
-    for (std::string &a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = -1;
-    EXPECT_EQ(posix_spawn(&pid, CAUSTICA_BINARY, &actions, nullptr, argv.data(), environ), 0);
-    posix_spawn_file_actions_destroy(&actions);
-    return pid;
-}
-
-// The exit status, or 1000 + the signal that ended the process.
-int wait_for(pid_t pid) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
-}
-
-// Waits until `predicate` holds or the process has ended; true if it holds.
-template <typename Predicate> bool wait_until(pid_t pid, Predicate predicate) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (std::chrono::steady_clock::now() < deadline) {
-        if (predicate()) return true;
-        int status = 0;
-        if (waitpid(pid, &status, WNOHANG) == pid) return predicate();
-        std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-    return false;
-}
-
-bool bit_identical(const RgbImage &a, const RgbImage &b) {
-    return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
-           std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
-}
 
 std::string partial_attribute(const std::string &exr) {
     auto in = OIIO::ImageInput::open(exr);
