@@ -9,6 +9,7 @@
 
 #include <tbb/global_control.h>
 
+#include <chrono>
 #include <csignal>
 #include <algorithm>
 #include <cstdio>
@@ -52,7 +53,9 @@ double peak_memory_mib() {
     return usage.ru_maxrss / 1024.0; // ru_maxrss is in KiB on Linux
 }
 
-void write_stats_json(const std::string &path, const Scene &scene, const RenderStats &stats, int threads, int ranks) {
+// ranks: the processes of the render; reduce_seconds: the time rank 0 spent adding up their films.
+void write_stats_json(const std::string &path, const Scene &scene, const RenderStats &stats, int threads, int ranks,
+                      double reduce_seconds) {
     std::ofstream out(path);
     if (!out) throw std::runtime_error("cannot write statistics to \"" + path + "\"");
     Vec2i res = scene.film->resolution();
@@ -62,6 +65,7 @@ void write_stats_json(const std::string &path, const Scene &scene, const RenderS
         << "  \"resolution\": [" << res.x << ", " << res.y << "],\n"
         << "  \"threads\": " << threads << ",\n"
         << "  \"processes\": " << ranks << ",\n"
+        << "  \"reduce_seconds\": " << reduce_seconds << ",\n"
         << "  \"wall_seconds\": " << stats.seconds << ",\n"
         << "  \"samples_per_pixel\": " << stats.samples_per_pixel << ",\n"
         << "  \"rays\": " << stats.rays.load() << ",\n"
@@ -162,8 +166,11 @@ int run_render(const RenderCommandOptions &options) {
                         samples - std::min(samples, samples_before));
     });
     progress.finish();
+    double reduce_seconds = 0;
     if (group.ranks() > 1) {
+        const auto reduce_start = std::chrono::steady_clock::now();
         group.reduce(*scene->film, stats);
+        reduce_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - reduce_start).count();
         if (!root) return stats.interrupted ? 128 + int(interrupt_signal) : 0;
     }
 
@@ -173,7 +180,7 @@ int run_render(const RenderCommandOptions &options) {
     if (!exr_path.empty())
         write_exr(exr_path, image, metadata, scene->film->save_fp16() ? ExrPixelType::Half : ExrPixelType::Float);
     if (!png_path.empty()) write_png(png_path, image);
-    if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads, group.ranks());
+    if (!options.stats_json.empty()) write_stats_json(options.stats_json, *scene, stats, threads, group.ranks(), reduce_seconds);
     // Only once the image is written: a render killed before that can still be resumed.
     if ((checkpointing || options.resume) && !stats.interrupted) std::filesystem::remove(checkpoint);
 
