@@ -20,7 +20,7 @@ class Film;
 
 class ProcessGroup : public RenderShare {
   public:
-    // Adds every rank's film (Film::save_state) into rank 0's, and the ranks' counters (rays,
+    // Adds every rank's film (Film::sums) into rank 0's, and the ranks' counters (rays,
     // samples taken, non-finite samples; the most light vertices kept) into rank 0's stats.
     virtual void reduce(Film &film, RenderStats &stats) const {
         (void)film;

@@ -168,6 +168,7 @@ int run_render(const RenderCommandOptions &options) {
     progress.finish();
     double reduce_seconds = 0;
     if (group.ranks() > 1) {
+        group.sum(0); // every rank has finished rendering: the time below is the reduction's alone
         const auto reduce_start = std::chrono::steady_clock::now();
         group.reduce(*scene->film, stats);
         reduce_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - reduce_start).count();

@@ -329,57 +329,46 @@ void Film::restore_state(std::istream &in) {
 
 namespace {
 
-// Adds b to a element by element (a store never written is empty, and then takes b), with the
-// integer additions of fixed_point.h; returns false on overflow.
-template <typename T> bool add_sums(std::vector<T> &a, const std::vector<T> &b) {
-    if (b.empty()) return true;
-    if (a.empty()) a.assign(b.size(), T{});
-    bool ok = true;
-    for (size_t i = 0; i < b.size(); ++i) ok &= !__builtin_add_overflow(a[i], b[i], &a[i]);
-    return ok;
-}
+constexpr uint32_t CameraSamples = 1, Splats = 2, BucketSplats = 4; // Film::stores()
 
 } // namespace
 
-void Film::add_state(std::istream &in) {
-    std::vector<Pixel> pixels;
-    read_array(in, pixels, pixel_count(), true);
-    std::vector<Moments> moments;
-    read_array(in, moments, moments_.size());
-    std::vector<int64_t> splats;
-    read_array(in, splats, pixel_count() * 3, true);
-    const uint64_t overflow = read_u64(in);
-    if (!in || overflow > 1) throw std::runtime_error("film state: truncated");
-    if (overflow) splats_.set_overflow(true);
-    bool ok = true;
-    if (!pixels.empty()) {
-        Pixel *mine = camera_pixels();
-        for (size_t i = 0; i < pixels.size(); ++i) {
-            for (int c = 0; c < 3; ++c) ok &= !__builtin_add_overflow(mine[i].rgb_sum[c], pixels[i].rgb_sum[c], &mine[i].rgb_sum[c]);
-            ok &= !__builtin_add_overflow(mine[i].weight_sum, pixels[i].weight_sum, &mine[i].weight_sum);
-        }
+uint32_t Film::stores() const {
+    splats_.flush();
+    if (bucket_splats_) bucket_splats_->flush();
+    return (pixels_.empty() ? 0 : CameraSamples) | (splats_.sums().empty() ? 0 : Splats) |
+           (bucket_splats_ && !bucket_splats_->sums().empty() ? BucketSplats : 0);
+}
+
+Film::Sums Film::sums(uint32_t stores) {
+    Sums sums;
+    auto add = [&](int64_t *data, size_t count) { sums.narrow.emplace_back(data, count); };
+    if (stores & CameraSamples) {
+        camera_pixels();
+        add(reinterpret_cast<int64_t *>(pixels_.data()), pixels_.size() * sizeof(Pixel) / sizeof(int64_t));
+        if (spectral_) add(bucket_sums_.data(), bucket_sums_.size());
     }
-    for (size_t i = 0; i < moments.size(); ++i) {
-        Moments &m = moments_[i];
-        for (int c = 0; c < 3; ++c) {
-            ok &= !__builtin_add_overflow(m.sum[c], moments[i].sum[c], &m.sum[c]);
-            ok &= !__builtin_add_overflow(m.sum_sq[c], moments[i].sum_sq[c], &m.sum_sq[c]);
-        }
-        m.count += moments[i].count;
+    splats_.flush();
+    if (stores & Splats) {
+        std::vector<int64_t> &splats = splats_.sums(true);
+        add(splats.data(), splats.size());
     }
-    splats_.add_sums(splats);
-    if (spectral_) {
-        std::vector<int64_t> bucket_sums, bucket_splats;
-        read_array(in, bucket_sums, pixel_count() * spectral_->count(), true);
-        read_array(in, bucket_splats, pixel_count() * spectral_->count(), true);
-        const uint64_t bucket_overflow = read_u64(in);
-        if (!in || bucket_overflow > 1) throw std::runtime_error("film state: truncated");
-        if (!bucket_sums.empty()) camera_pixels();
-        ok &= add_sums(bucket_sums_, bucket_sums);
-        bucket_splats_->add_sums(bucket_splats);
-        if (bucket_overflow) bucket_splats_->set_overflow(true);
+    if (bucket_splats_ && (stores & BucketSplats)) {
+        bucket_splats_->flush();
+        std::vector<int64_t> &splats = bucket_splats_->sums(true);
+        add(splats.data(), splats.size());
     }
-    if (!ok) camera_overflow_ = true;
+    sums.wide = {reinterpret_cast<fixed_point::Wide *>(moments_.data()),
+                 moments_.size() * sizeof(Moments) / sizeof(fixed_point::Wide)};
+    sums.overflow = (camera_overflow_ ? CameraSamples : 0) | (splats_.overflowed() ? Splats : 0) |
+                    (bucket_splats_ && bucket_splats_->overflowed() ? BucketSplats : 0);
+    return sums;
+}
+
+void Film::set_overflow(uint32_t flags) {
+    camera_overflow_ = (flags & CameraSamples) != 0;
+    splats_.set_overflow((flags & Splats) != 0);
+    if (bucket_splats_) bucket_splats_->set_overflow((flags & BucketSplats) != 0);
 }
 
 CameraSample get_camera_sample(Sampler &sampler, Vec2i pixel, const Filter &filter, const Shutter *shutter) {

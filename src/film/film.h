@@ -10,7 +10,7 @@
 //
 // Every store sums in fixed point (fixed_point.h), so a pixel's sums do not depend on the order
 // its samples were added in: the image is the same whatever the threads, and the stores of
-// processes that shared a render's samples add up exactly to one process's (add_state).
+// processes that shared a render's samples add up exactly to one process's (sums()).
 //
 // Each store is allocated when it is first written (a checkpoint restores it as it was): a
 // light tracer never adds camera samples, and a path tracer never splats, so each needs only
@@ -52,6 +52,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -151,10 +152,20 @@ class Film {
     // them while nothing is being added.
     void save_state(std::ostream &out) const;
     void restore_state(std::istream &in);
-    // Adds what save_state wrote, from a film of the same scene, to this film's stores: the
-    // samples of both are then this film's, as if it had taken them all. Throws
-    // std::runtime_error if the data does not fit.
-    void add_state(std::istream &in);
+
+    // The film's sums as arrays of integers that add element by element, for the reduction of
+    // a distributed render (ProcessGroup::reduce). Stores are allocated when first written, so
+    // films that took different samples may hold different ones: stores() names those this film
+    // holds (a bit each), and sums(stores) gives the named ones, in a fixed order, allocating
+    // those it lacks. With them, the flags of sums that left the range (a bit per store).
+    struct Sums {
+        std::vector<std::span<int64_t>> narrow;
+        std::span<fixed_point::Wide> wide;
+        uint32_t overflow = 0;
+    };
+    uint32_t stores() const;
+    Sums sums(uint32_t stores);
+    void set_overflow(uint32_t flags);
 
   private:
     size_t index(Vec2i pixel) const {
@@ -166,15 +177,17 @@ class Film {
         int64_t rgb_sum[3] = {0, 0, 0};
         int64_t weight_sum = 0;
     };
+    static_assert(sizeof(Pixel) == 4 * sizeof(int64_t), "a pixel's sums add element by element");
+    // All 128-bit integers, so that moments add element by element (sums()).
     struct Moments {
         fixed_point::Wide sum[3] = {0, 0, 0}, sum_sq[3] = {0, 0, 0};
-        uint64_t count = 0;
+        fixed_point::Wide count = 0;
         // Channel c's sample variance s^2 (count >= 2) and mean.
         double sample_variance(int c) const {
             const double m = mean(c);
-            return std::max(0.0, (fixed_point::value(sum_sq[c]) - count * m * m) / (count - 1));
+            return std::max(0.0, (fixed_point::value(sum_sq[c]) - double(count) * m * m) / double(count - 1));
         }
-        double mean(int c) const { return fixed_point::value(sum[c]) / count; }
+        double mean(int c) const { return fixed_point::value(sum[c]) / double(count); }
     };
 
     Vec2i full_resolution_;
@@ -211,6 +224,7 @@ class Film {
     // Whether a camera sample's sum left the fixed-point range (reported with the image).
     mutable std::atomic<bool> camera_overflow_{false};
     std::once_flag pixels_allocated_;
+    static_assert(sizeof(Moments) == 7 * sizeof(fixed_point::Wide), "moments add element by element");
     std::vector<Moments> moments_; // empty unless enable_variance()
     // Mutable: making an image or a checkpoint first adds the queued splats to the sums, which
     // changes no value the film stands for.

@@ -104,14 +104,4 @@ void SplatBuffer::restore(std::vector<int64_t> sums) {
     sums_ = std::move(sums);
 }
 
-void SplatBuffer::add_sums(const std::vector<int64_t> &sums) {
-    if (sums.empty()) return;
-    flush();
-    allocate_sums();
-    bool overflow = false;
-    for (size_t i = 0; i < sums.size(); ++i)
-        if (__builtin_add_overflow(sums_[i], sums[i], &sums_[i])) overflow = true;
-    if (overflow) overflow_ = true;
-}
-
 } // namespace caustica

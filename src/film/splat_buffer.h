@@ -68,10 +68,12 @@ class SplatBuffer {
     static constexpr double kUnit = fixed_point::kUnit;
     // Replaces the sums (a checkpoint's; empty or channels() per pixel) and drops what is queued.
     void restore(std::vector<int64_t> sums);
-    // Adds another buffer's sums over the same bounds (empty, or channels() per pixel), as
-    // sums() gives them: the reduction of the ranks of a distributed render. Call it while no
-    // thread is adding.
-    void add_sums(const std::vector<int64_t> &sums);
+    // After flush(), the sums to change in place (a distributed render's reduction), allocated
+    // first if `allocate`. Call it while no thread is adding.
+    std::vector<int64_t> &sums(bool allocate) {
+        if (allocate) allocate_sums();
+        return sums_;
+    }
 
     // Whether a sum left the fixed-point range since the flag was last taken; take_overflow()
     // also clears it.

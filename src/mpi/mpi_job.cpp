@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <climits>
 #include <cstdio>
-#include <sstream>
+#include <span>
 #include <stdexcept>
 
 namespace caustica {
@@ -62,8 +62,17 @@ class MpiJob final : public ProcessGroup {
             throw std::runtime_error("the MPI library does not support MPI_THREAD_FUNNELED");
         }
         if (rank_ != 0) set_warnings_enabled(false);
+        MPI_Type_contiguous(int(sizeof(fixed_point::Wide)), MPI_BYTE, &wide_type_);
+        MPI_Type_commit(&wide_type_);
+        MPI_Op_create(&add_checked<int64_t>, 1, &narrow_sum_);
+        MPI_Op_create(&add_checked<fixed_point::Wide>, 1, &wide_sum_);
     }
-    ~MpiJob() override { MPI_Finalize(); }
+    ~MpiJob() override {
+        MPI_Op_free(&narrow_sum_);
+        MPI_Op_free(&wide_sum_);
+        MPI_Type_free(&wide_type_);
+        MPI_Finalize();
+    }
 
     int rank() const override { return rank_; }
     int ranks() const override { return ranks_; }
@@ -101,21 +110,21 @@ class MpiJob final : public ProcessGroup {
         return all;
     }
 
-    // A binary tree: at step s, each rank r with r mod 2s == s sends its sums to r - s, which
-    // adds them to its own. Integer sums make the order irrelevant.
+    // MPI_Reduce onto rank 0, in place there, of the film's integer sums: integer addition
+    // makes the order of the ranks' terms irrelevant. The operations add with overflow checks,
+    // as the film does.
     void reduce(Film &film, RenderStats &stats) const override {
-        for (int step = 1; step < ranks_; step *= 2) {
-            if (rank_ % (2 * step) == step) {
-                std::ostringstream out;
-                film.save_state(out);
-                send_bytes(std::move(out).str(), rank_ - step);
-                break;
-            }
-            if (rank_ + step < ranks_) {
-                std::istringstream in(receive_bytes(rank_ + step));
-                film.add_state(in);
-            }
-        }
+        uint32_t held = film.stores(), stores = 0;
+        check(MPI_Allreduce(&held, &stores, 1, MPI_UINT32_T, MPI_BOR, MPI_COMM_WORLD), "reduction");
+        Film::Sums sums = film.sums(stores);
+        sum_overflowed = false;
+        for (std::span<int64_t> array : sums.narrow)
+            reduce_to_root(array.data(), array.size(), sizeof(int64_t), MPI_INT64_T, narrow_sum_);
+        reduce_to_root(sums.wide.data(), sums.wide.size(), sizeof(fixed_point::Wide), wide_type_, wide_sum_);
+        uint32_t overflow = sums.overflow | (sum_overflowed ? ~0u : 0u), any_overflow = 0;
+        check(MPI_Reduce(&overflow, &any_overflow, 1, MPI_UINT32_T, MPI_BOR, 0, MPI_COMM_WORLD), "reduction");
+        if (rank_ == 0) film.set_overflow(any_overflow);
+
         stats.rays = uint64_t(sum(int64_t(stats.rays.load())));
         stats.non_finite_samples = uint64_t(sum(int64_t(stats.non_finite_samples.load())));
         stats.pixel_samples = uint64_t(sum(int64_t(stats.pixel_samples.load())));
@@ -148,7 +157,29 @@ class MpiJob final : public ProcessGroup {
     }
 
   private:
+    // Sums `count` elements of `size` bytes into rank 0's, in pieces that MPI's int counts allow.
+    void reduce_to_root(void *data, size_t count, size_t size, MPI_Datatype type, MPI_Op op) const {
+        const size_t piece = kPiece / size;
+        for (size_t offset = 0; offset < count; offset += piece) {
+            char *first = static_cast<char *>(data) + offset * size;
+            const int n = int(std::min(piece, count - offset));
+            check(MPI_Reduce(rank_ == 0 ? MPI_IN_PLACE : first, first, n, type, op, 0, MPI_COMM_WORLD), "reduction");
+        }
+    }
+
+    // Whether an addition of the reduction left the integers' range (in the process that made it).
+    static inline bool sum_overflowed = false;
+
+    template <typename T> static void add_checked(void *in, void *inout, int *count, MPI_Datatype *) {
+        const T *a = static_cast<const T *>(in);
+        T *b = static_cast<T *>(inout);
+        for (int i = 0; i < *count; ++i)
+            if (__builtin_add_overflow(b[i], a[i], &b[i])) sum_overflowed = true;
+    }
+
     int rank_ = 0, ranks_ = 1;
+    MPI_Datatype wide_type_ = MPI_DATATYPE_NULL; // a 128-bit integer
+    MPI_Op narrow_sum_ = MPI_OP_NULL, wide_sum_ = MPI_OP_NULL;
 };
 
 } // namespace
