@@ -57,12 +57,14 @@ class IterationRenderer {
     // interrupted, and calls the budget's at_boundary after every completed iteration.
     void run(const std::function<bool(int iteration)> &iteration);
 
-    // One parallel pass: work(pixel, index, ctx) for every pixel of the film's bounds, with the
-    // thread's sampler started at (pixel, iteration, dimension). Returns false if cancelled.
+    // One parallel pass: work(pixel, index, ctx) for every pixel of the film's bounds (of this
+    // rank's tiles, when pixels are shared), with the thread's sampler started at (pixel,
+    // iteration, dimension). Returns false if cancelled.
     bool for_each_pixel(int iteration, int dimension, const IterationPixelFunction &work);
 
     // A parallel pass over path_count paths that belong to no pixel (photons): work(index, ctx),
-    // with the sampler started at a pixel and sample index derived from (iteration, index).
+    // with the sampler started at a pixel and sample index derived from (iteration, index); when
+    // paths are shared, only this rank's chunks of them.
     bool for_each_path(int iteration, size_t path_count, int dimension,
                        const std::function<void(size_t index, IterationPixelContext &ctx)> &work);
 

@@ -20,6 +20,10 @@
 // (wavelength_groups.h); a visible point gathers only its group's photons, and each
 // iteration's flux is rescaled by all photons over the group's photons, so the final division
 // by the total photon count stays right. Flux is accumulated in the sensor's RGB, as pbrt-v4 does.
+//
+// A distributed render (docs/mpi.md) shares each iteration: a rank traces the visible points of
+// its own tiles and a share of the photons, the ranks exchange the photons, and each gathers and
+// keeps the statistics of its own pixels.
 #pragma once
 
 #include "integrators/integrator.h"

@@ -23,6 +23,9 @@
 // Spectral: pixels are split into wavelength groups per iteration (wavelength_groups.h); light
 // and camera subpaths that are connected or merged always share the group's wavelengths. A
 // dispersive refraction on either subpath keeps the hero wavelength only for what it joins.
+//
+// Iterations are independent but for the radius, which follows the iteration's index: a
+// distributed render (docs/mpi.md) gives each rank whole iterations.
 #pragma once
 
 #include "integrators/integrator.h"
