@@ -16,33 +16,30 @@
 
 namespace caustica::fixed_point {
 
-inline constexpr double kUnit = 0x1p-28;
-// The largest single term, in units: sums of 2 terms cannot wrap before the overflow check.
-inline constexpr double kLimit = 0x1p62;
+using Wide = __int128;
+
+// The unit of each kind of sum, and the largest single term in units (so that adding two terms
+// cannot wrap before the overflow check).
+template <typename Sum> struct Units;
+template <> struct Units<int64_t> {
+    static constexpr double unit = 0x1p-28, limit = 0x1p62;
+};
+template <> struct Units<Wide> {
+    static constexpr double unit = 0x1p-64, limit = 0x1p125;
+};
+
+inline constexpr double kUnit = Units<int64_t>::unit;
+inline constexpr double kLimit = Units<int64_t>::limit;
 
 // Adds v (in value units) to sum, rounded to the nearest unit; returns false if the term or the
 // sum left the range (the sum is then clamped or wrapped, and the caller reports it).
-inline bool add(int64_t &sum, double v) {
-    double units = std::nearbyint(v / kUnit);
-    bool ok = std::abs(units) <= kLimit;
-    if (!ok) units = std::copysign(kLimit, units);
-    return !__builtin_add_overflow(sum, int64_t(units), &sum) && ok;
+template <typename Sum> bool add(Sum &sum, double v) {
+    double units = std::nearbyint(v / Units<Sum>::unit);
+    const bool ok = std::abs(units) <= Units<Sum>::limit;
+    if (!ok) units = std::copysign(Units<Sum>::limit, units);
+    return !__builtin_add_overflow(sum, Sum(units), &sum) && ok;
 }
 
-inline double value(int64_t sum) { return double(sum) * kUnit; }
-
-// The 128-bit sums of squares: units of 2^-64.
-using Wide = __int128;
-inline constexpr double kWideUnit = 0x1p-64;
-inline constexpr double kWideLimit = 0x1p125;
-
-inline bool add(Wide &sum, double v) {
-    double units = std::nearbyint(v / kWideUnit);
-    bool ok = std::abs(units) <= kWideLimit;
-    if (!ok) units = std::copysign(kWideLimit, units);
-    return !__builtin_add_overflow(sum, Wide(units), &sum) && ok;
-}
-
-inline double value(Wide sum) { return double(sum) * kWideUnit; }
+template <typename Sum> double value(Sum sum) { return double(sum) * Units<Sum>::unit; }
 
 } // namespace caustica::fixed_point

@@ -1,19 +1,13 @@
 // SIGINT and SIGTERM during a render: the command stops, writes the image accumulated so far
 // (normalised by the samples actually taken, marked partial) and exits with 128 + the signal.
-#include "../integrators/render_test_support.h"
+#include "process_test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
 
 #include <csignal>
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
-
-extern char **environ;
 
 using namespace caustica::testing;
 
@@ -24,24 +18,14 @@ namespace {
 // returns the exit status.
 int interrupt_render(int signal_number, const std::string &out, const std::string &log) {
     std::string scene = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/cornell-box.pbrt";
-    std::vector<std::string> args = {CAUSTICA_BINARY, "render", scene, "--spp", "1000000", "-o", out};
-    std::vector<char *> argv;
-    for (std::string &a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid;
-    EXPECT_EQ(posix_spawn(&pid, CAUSTICA_BINARY, &actions, nullptr, argv.data(), environ), 0);
-    posix_spawn_file_actions_destroy(&actions);
+    const pid_t pid = start_caustica({"render", scene, "--spp", "1000000", "-o", out}, log);
     // Wait for the first progress line: the scene is built and samples are being taken.
     for (int i = 0; i < 600 && read_text(log).find("progress:") == std::string::npos; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     std::this_thread::sleep_for(std::chrono::milliseconds(800));
     kill(pid, signal_number);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const int status = wait_for(pid);
+    return status < 1000 ? status : -1;
 }
 
 void expect_partial_image(const std::string &out) {
