@@ -1,6 +1,7 @@
 #include "geometry/embree_scene.h"
 
 #include "core/error.h"
+#include "core/next_float.h"
 
 #include <algorithm>
 #include <cmath>
@@ -454,7 +455,7 @@ bool GeometryScene::occluded(const Ray &ray) const {
     r.dir_z = ray.d.z;
     r.tnear = 0;
     // Embree's interval is closed; stop one float short of t_max to make it open.
-    r.tfar = std::nextafter(ray.t_max, 0.f);
+    r.tfar = ray.t_max > 0 ? next_float_down(ray.t_max) : ray.t_max < 0 ? next_float_up(ray.t_max) : ray.t_max;
     context.t_max = r.tfar;
     r.time = moving_instances_ > 0 ? times_.fraction(ray.time) : 0.f;
     r.mask = ~0u;

@@ -1,6 +1,7 @@
 // Rays and robust ray spawning.
 #pragma once
 
+#include "core/next_float.h"
 #include "core/vecmath.h"
 
 #include <cmath>
@@ -41,8 +42,8 @@ inline Vec3f offset_ray_origin(Vec3f p, Vec3f n, Vec3f w) {
     if (dot(n, w) < 0) n = -n;
     Vec3f o = p + n * offset;
     for (int i = 0; i < 3; ++i) {
-        if (n[i] > 0) o[i] = std::nextafter(o[i], Infinity);
-        else if (n[i] < 0) o[i] = std::nextafter(o[i], -Infinity);
+        if (n[i] > 0) o[i] = next_float_up(o[i]);
+        else if (n[i] < 0) o[i] = next_float_down(o[i]);
     }
     return o;
 }
