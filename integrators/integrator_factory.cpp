@@ -7,28 +7,7 @@
 #include "integrators/vcm/vcm.h"
 #include "scene/scene.h"
 
-#include <algorithm>
-#include <cstring>
-
 namespace caustica {
-
-float RenderShare::max(float value) const {
-    if (ranks() == 1) return value;
-    std::vector<char> bytes(sizeof value);
-    std::memcpy(bytes.data(), &value, sizeof value);
-    bytes = gather_all(std::move(bytes));
-    for (size_t offset = 0; offset + sizeof value <= bytes.size(); offset += sizeof value) {
-        float v;
-        std::memcpy(&v, &bytes[offset], sizeof v);
-        value = std::max(value, v);
-    }
-    return value;
-}
-
-const RenderShare &RenderShare::alone() {
-    static const RenderShare share;
-    return share;
-}
 
 std::unique_ptr<Integrator> create_integrator(const Scene &scene) {
     if (scene.integrator_name == "pt") return std::make_unique<PathTracer>(scene.integrator_params);
