@@ -74,10 +74,10 @@ void for_each_pixel_sample(const Scene &scene, const RenderBudget &budget, Rende
         return seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
 
-    // The samples each pixel has taken. A pixel's value only depends on its own samples, taken
-    // in index order, and splats are summed order-independently, so the sweeps below may be cut
-    // anywhere: a render resumed from per-pixel counts (an interrupted sweep) gives the same
-    // image as one that was never stopped.
+    // The samples each pixel has taken. A pixel's value only depends on its own samples, and the
+    // film sums in order-independent fixed point, so the sweeps below may be cut anywhere: a
+    // render resumed from per-pixel counts (an interrupted sweep) gives the same image as one
+    // that was never stopped.
     std::vector<int> taken = std::move(stats.pixel_sample_counts);
     stats.pixel_sample_counts.clear();
     if (taken.size() != pixel_count) taken.assign(pixel_count, stats.samples_per_pixel);

@@ -1,7 +1,7 @@
 // Renders camera samples over the image in parallel tiles (oneTBB). Every sample's random numbers
-// depend only on (pixel, sample index, seed), and every pixel belongs to exactly one tile, so the
-// image is bit-identical whatever the number of threads, and whether or not the render was
-// interrupted and resumed from a checkpoint.
+// depend only on (pixel, sample index, seed), and the film sums in fixed point, so the image is
+// bit-identical whatever the number of threads or MPI ranks (RenderShare), and whether or not
+// the render was interrupted and resumed from a checkpoint.
 #pragma once
 
 #include "core/scratch_buffer.h"
