@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -243,73 +244,90 @@ std::string session_state(const RenderSession &session, const RenderStats &stats
     return std::move(out).str();
 }
 
-void write_checkpoint(const std::string &path, const RenderFingerprint &fingerprint,
-                      const std::vector<std::string> &rank_states) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error("cannot create \"" + temporary + "\": " + std::strerror(errno));
-        write_header(out, fingerprint);
-        write_value<uint64_t>(out, rank_states.size());
-        for (const std::string &state : rank_states) {
-            write_value<uint64_t>(out, state.size());
-            out.write(state.data(), std::streamsize(state.size()));
-        }
-        out << kEndMarker;
-        out.close();
-        if (!out) {
-            std::remove(temporary.c_str());
-            throw std::runtime_error("failed writing \"" + temporary + "\"");
-        }
+CheckpointFile::CheckpointFile(const std::string &path, const RenderFingerprint &fingerprint, size_t states)
+    : path_(path), temporary_(path + ".tmp"), out_(temporary_, std::ios::binary | std::ios::trunc), remaining_(states) {
+    if (!out_) throw std::runtime_error("cannot create \"" + temporary_ + "\": " + std::strerror(errno));
+    write_header(out_, fingerprint);
+    write_value<uint64_t>(out_, states);
+}
+
+CheckpointFile::~CheckpointFile() {
+    if (!committed_) {
+        out_.close();
+        std::remove(temporary_.c_str());
     }
+}
+
+void CheckpointFile::add(const std::string &state) {
+    if (remaining_ == 0) throw std::logic_error("checkpoint: more states than announced");
+    --remaining_;
+    write_value<uint64_t>(out_, state.size());
+    out_.write(state.data(), std::streamsize(state.size()));
+}
+
+void CheckpointFile::commit() {
+    if (remaining_ != 0) throw std::logic_error("checkpoint: fewer states than announced");
+    out_ << kEndMarker;
+    out_.close();
+    if (!out_) throw std::runtime_error("failed writing \"" + temporary_ + "\"");
     // On the disk before it replaces the previous checkpoint, and the rename on the disk too.
-    sync_to_disk(temporary, O_RDONLY);
-    if (std::rename(temporary.c_str(), path.c_str()) != 0)
-        throw std::runtime_error("cannot rename \"" + temporary + "\" to \"" + path + "\": " + std::strerror(errno));
-    std::filesystem::path directory = std::filesystem::path(path).parent_path();
+    sync_to_disk(temporary_, O_RDONLY);
+    if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
+        throw std::runtime_error("cannot rename \"" + temporary_ + "\" to \"" + path_ + "\": " + std::strerror(errno));
+    committed_ = true;
+    std::filesystem::path directory = std::filesystem::path(path_).parent_path();
     sync_to_disk(directory.empty() ? "." : directory.string(), O_RDONLY | O_DIRECTORY);
 }
 
-std::vector<std::string> read_checkpoint(const std::string &path, const RenderFingerprint &fingerprint) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+CheckpointReader::CheckpointReader(const std::string &path, const RenderFingerprint &fingerprint)
+    : path_(path), in_(path, std::ios::binary) {
+    if (!in_)
         throw InputError("--resume: there is no checkpoint \"" + path +
                          "\" (--checkpoint writes it next to the output; it is deleted when the render completes)");
-    auto damaged = [&](const std::string &why) {
-        return InputError("checkpoint \"" + path + "\" is damaged (" + why + "); delete it to start afresh");
-    };
     std::string line;
-    if (!std::getline(in, line) || line != kFormatLine) throw damaged("not a caustica checkpoint of this version");
+    if (!std::getline(in_, line) || line != kFormatLine) throw damaged("not a caustica checkpoint of this version");
     RenderFingerprint saved;
-    while (std::getline(in, line) && !line.empty()) {
+    while (std::getline(in_, line) && !line.empty()) {
         const size_t space = line.find(' ');
         if (space == std::string::npos) throw damaged("bad header line \"" + line + "\"");
         saved.fields.emplace_back(line.substr(0, space), line.substr(space + 1));
     }
-    if (!in) throw damaged("truncated header");
+    if (!in_) throw damaged("truncated header");
     if (saved.fields != fingerprint.fields) throw InputError(mismatch_message(path, saved, fingerprint));
+    // The states' sizes and the end marker are checked now, skipping over the states, so that
+    // reading them one at a time (next_state) cannot fail part-way.
     try {
-        const uint64_t ranks = read_value<uint64_t>(in);
-        if (!in || ranks == 0 || ranks > (uint64_t(1) << 24)) throw std::runtime_error("bad rank count");
-        std::vector<std::string> states;
-        for (uint64_t r = 0; r < ranks; ++r) {
-            const uint64_t size = read_value<uint64_t>(in);
-            std::string state(size <= (uint64_t(1) << 40) ? size_t(size) : 0, '\0');
-            if (state.size() != size) throw std::runtime_error("bad state size");
-            in.read(state.data(), std::streamsize(state.size()));
-            if (!in) throw std::runtime_error("truncated");
-            states.push_back(std::move(state));
+        const uint64_t count = read_value<uint64_t>(in_);
+        if (count == 0 || count > (uint64_t(1) << 24)) throw damaged("bad rank count");
+        states_ = size_t(count);
+        first_state_ = in_.tellg();
+        for (size_t r = 0; r < states_; ++r) {
+            const uint64_t size = read_value<uint64_t>(in_);
+            if (size > (uint64_t(1) << 40)) throw damaged("bad state size");
+            in_.seekg(std::streamoff(size), std::ios::cur);
         }
         std::string end(std::strlen(kEndMarker), '\0');
-        in.read(end.data(), std::streamsize(end.size()));
-        if (!in || end != kEndMarker || in.peek() != std::char_traits<char>::eof())
-            throw std::runtime_error("no end marker");
-        return states;
+        in_.read(end.data(), std::streamsize(end.size()));
+        if (!in_ || end != kEndMarker || in_.peek() != std::char_traits<char>::eof()) throw damaged("no end marker");
+    } catch (const InputError &) {
+        throw;
     } catch (const std::runtime_error &e) {
         throw damaged(e.what());
-    } catch (const std::bad_alloc &) {
-        throw damaged("impossible sizes");
     }
+    in_.clear();
+    in_.seekg(first_state_);
+}
+
+InputError CheckpointReader::damaged(const std::string &why) const {
+    return InputError("checkpoint \"" + path_ + "\" is damaged (" + why + "); delete it to start afresh");
+}
+
+std::string CheckpointReader::next_state() {
+    const uint64_t size = read_value<uint64_t>(in_);
+    std::string state(size_t(size), '\0');
+    in_.read(state.data(), std::streamsize(state.size()));
+    if (!in_) throw damaged("truncated");
+    return state;
 }
 
 void restore_session_state(const std::string &state, RenderSession &session, RenderStats &stats) {
@@ -338,13 +356,13 @@ void resume_from_checkpoint(const std::string &path, const RenderFingerprint &fi
                             RenderSession &session, RenderStats &stats) {
     // Rank 0 reads the file; every rank learns whether that worked, so that an error ends
     // every rank the same way rather than leaving the others waiting.
-    std::vector<std::string> states;
+    std::optional<CheckpointReader> reader;
     std::string error;
     if (group.rank() == 0) {
         try {
-            states = read_checkpoint(path, fingerprint);
-            if (states.size() != size_t(group.ranks()))
-                throw InputError("checkpoint \"" + path + "\" was written by " + std::to_string(states.size()) +
+            reader.emplace(path, fingerprint);
+            if (reader->states() != size_t(group.ranks()))
+                throw InputError("checkpoint \"" + path + "\" was written by " + std::to_string(reader->states()) +
                                  " processes, and this render has " + std::to_string(group.ranks()) +
                                  " (resume with the same number of MPI ranks)");
         } catch (const InputError &e) {
@@ -352,10 +370,9 @@ void resume_from_checkpoint(const std::string &path, const RenderFingerprint &fi
         }
     }
     std::vector<char> error_bytes(error.begin(), error.end());
-    if (group.rank() != 0) error_bytes.clear();
     error_bytes = group.gather_all(std::move(error_bytes));
     if (!error_bytes.empty()) throw InputError(std::string(error_bytes.begin(), error_bytes.end()));
-    const std::string mine = group.scatter_from_root(std::move(states));
+    const std::string mine = group.scatter_from_root([&](int) { return reader->next_state(); });
     try {
         restore_session_state(mine, session, stats);
     } catch (const std::runtime_error &e) {
@@ -379,16 +396,19 @@ void CheckpointWriter::at_boundary() {
     // The same state again (a renderer may report it twice): nothing new to save.
     if (stats_.samples_per_pixel == saved_spp_ && stats_.pixel_samples == saved_pixel_samples_) due = false;
     if (!group_.agree(due)) return;
-    std::vector<std::string> states = group_.gather_to_root(session_state(session_, stats_));
-    if (group_.rank() == 0) {
-        try {
-            write_checkpoint(path_, fingerprint_, states);
+    // Rank 0 writes the states as they arrive, one at a time.
+    try {
+        std::optional<CheckpointFile> file;
+        if (group_.rank() == 0) file.emplace(path_, fingerprint_, size_t(group_.ranks()));
+        group_.gather_to_root(session_state(session_, stats_), [&](const std::string &state) { file->add(state); });
+        if (file) {
+            file->commit();
             saved_spp_ = stats_.samples_per_pixel;
             saved_pixel_samples_ = stats_.pixel_samples;
             saved_partial_ = !stats_.pixel_sample_counts.empty();
-        } catch (const std::runtime_error &e) {
-            warning(std::string(e.what()) + "; the render goes on without this checkpoint");
         }
+    } catch (const std::runtime_error &e) {
+        warning(std::string(e.what()) + "; the render goes on without this checkpoint");
     }
     last_ = std::chrono::steady_clock::now();
 }

@@ -25,10 +25,12 @@
 #pragma once
 
 #include "cli/process_group.h"
+#include "core/error.h"
 #include "integrators/integrator.h"
 
 #include <atomic>
 #include <chrono>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,15 +60,40 @@ std::string session_state(const RenderSession &session, const RenderStats &stats
 // Throws std::runtime_error if the data does not fit.
 void restore_session_state(const std::string &state, RenderSession &session, RenderStats &stats);
 
-// Writes a checkpoint of a render's processes (one state each, in rank order; one for a render
-// on its own) at `path`, replacing any previous one only once the new one is complete and on
-// the disk. Throws std::runtime_error when it cannot.
-void write_checkpoint(const std::string &path, const RenderFingerprint &fingerprint,
-                      const std::vector<std::string> &rank_states);
+// Writes a checkpoint of a render's processes at `path`, one state at a time (one for a render
+// on its own, else each rank's in rank order): commit() replaces any previous checkpoint only
+// once the new one is complete and on the disk; a file never committed is removed. Throws
+// std::runtime_error when it cannot.
+class CheckpointFile {
+  public:
+    CheckpointFile(const std::string &path, const RenderFingerprint &fingerprint, size_t states);
+    ~CheckpointFile();
+    void add(const std::string &state);
+    void commit();
 
-// The states of the checkpoint at `path`, in rank order. Throws InputError when there is no
-// checkpoint, when it belongs to a different render (naming what differs) or is damaged.
-std::vector<std::string> read_checkpoint(const std::string &path, const RenderFingerprint &fingerprint);
+  private:
+    std::string path_, temporary_;
+    std::ofstream out_;
+    size_t remaining_;
+    bool committed_ = false;
+};
+
+// Reads the checkpoint at `path`: the constructor checks the header and the layout and throws
+// InputError when there is no checkpoint, when it belongs to a different render (naming what
+// differs) or is damaged; then next_state() gives the states in rank order.
+class CheckpointReader {
+  public:
+    CheckpointReader(const std::string &path, const RenderFingerprint &fingerprint);
+    size_t states() const { return states_; }
+    std::string next_state();
+
+  private:
+    InputError damaged(const std::string &why) const;
+    std::string path_;
+    std::ifstream in_;
+    size_t states_ = 0;
+    std::streampos first_state_;
+};
 
 // Restores each rank's session and stats from the checkpoint at `path`, after which the render
 // continues where the saved one stopped: rank 0 reads it and hands each rank its state. Throws

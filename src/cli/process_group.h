@@ -10,6 +10,7 @@
 
 #include "integrators/integrator.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,10 +27,15 @@ class ProcessGroup : public RenderShare {
         (void)film;
         (void)stats;
     }
-    // Rank 0 receives every rank's bytes, in rank order; the others receive nothing.
-    virtual std::vector<std::string> gather_to_root(std::string bytes) const { return {std::move(bytes)}; }
-    // Each rank receives its element of rank 0's `per_rank` (one per rank; ignored elsewhere).
-    virtual std::string scatter_from_root(std::vector<std::string> per_rank) const { return std::move(per_rank.at(0)); }
+    // Rank 0 receives every rank's bytes in rank order, one at a time, and passes each to
+    // `take` (called on rank 0 only), so that it never holds more than one. If `take` throws,
+    // the rest are still received, and the first exception is thrown afterwards.
+    virtual void gather_to_root(std::string bytes, const std::function<void(const std::string &)> &take) const {
+        take(bytes);
+    }
+    // Rank 0 makes each rank's bytes in rank order (`make(rank)`, called on rank 0 only) and
+    // sends them; every rank returns its own.
+    virtual std::string scatter_from_root(const std::function<std::string(int rank)> &make) const { return make(0); }
     // Ends every process of the job at once with `status`, for a failure on one rank that the
     // others, waiting for it, cannot see.
     [[noreturn]] virtual void abort(int status) const;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <climits>
 #include <cstdio>
+#include <exception>
+#include <functional>
 #include <span>
 #include <stdexcept>
 
@@ -133,21 +135,28 @@ class MpiJob final : public ProcessGroup {
         stats.stored_light_vertices = most;
     }
 
-    std::vector<std::string> gather_to_root(std::string bytes) const override {
+    void gather_to_root(std::string bytes, const std::function<void(const std::string &)> &take) const override {
         if (rank_ != 0) {
             send_bytes(bytes, 0);
-            return {};
+            return;
         }
-        std::vector<std::string> all{std::move(bytes)};
-        for (int r = 1; r < ranks_; ++r) all.push_back(receive_bytes(r));
-        return all;
+        std::exception_ptr failure;
+        for (int r = 0; r < ranks_; ++r) {
+            if (r > 0) bytes = receive_bytes(r);
+            try {
+                if (!failure) take(bytes);
+            } catch (...) {
+                failure = std::current_exception();
+            }
+        }
+        if (failure) std::rethrow_exception(failure);
     }
 
-    std::string scatter_from_root(std::vector<std::string> per_rank) const override {
+    std::string scatter_from_root(const std::function<std::string(int)> &make) const override {
         if (rank_ != 0) return receive_bytes(0);
-        if (per_rank.size() != size_t(ranks_)) throw std::logic_error("scatter_from_root: one element per rank");
-        for (int r = 1; r < ranks_; ++r) send_bytes(per_rank[r], r);
-        return std::move(per_rank[0]);
+        std::string mine = make(0);
+        for (int r = 1; r < ranks_; ++r) send_bytes(make(r), r);
+        return mine;
     }
 
     [[noreturn]] void abort(int status) const override {
