@@ -7,7 +7,8 @@
 // samples or iterations, some ranks of bpm and vcm render nothing and hold no store.
 //
 // A rank that dies ends the job with a message naming it, and the last checkpoint (one state
-// per rank) remains: resumed with the same N, the render gives the uninterrupted image.
+// per rank) remains: resumed with the same N, the render gives the uninterrupted image; resumed
+// with another N, or damaged, it is refused.
 #include "process_test_support.h"
 
 #include <gtest/gtest.h>
@@ -132,6 +133,15 @@ TEST(Mpi, ARankThatDiesEndsTheJobAndItsCheckpointResumesToTheUninterruptedImage)
     EXPECT_EQ(wait_for(start_caustica(args(out, {"--checkpoint", "0", "--resume"}), dir + "/alone.log")), 2);
     EXPECT_NE(read_text(dir + "/alone.log").find("resume with the same number of MPI ranks"), std::string::npos)
         << read_text(dir + "/alone.log");
+
+    // A damaged copy is refused on every rank, with no rank left waiting.
+    const std::string good = dir + "/good.checkpoint";
+    fs::copy_file(checkpoint, good);
+    fs::resize_file(checkpoint, fs::file_size(checkpoint) / 2);
+    EXPECT_NE(wait_for(start_mpirun(2, args(out, {"--checkpoint", "0", "--resume"}), dir + "/damaged.log")), 0);
+    EXPECT_NE(read_text(dir + "/damaged.log").find("is damaged"), std::string::npos) << read_text(dir + "/damaged.log");
+    ASSERT_FALSE(fs::exists(out));
+    fs::copy_file(good, checkpoint, fs::copy_options::overwrite_existing);
 
     ASSERT_EQ(wait_for(start_mpirun(2, args(out, {"--checkpoint", "0", "--resume"}), dir + "/resumed.log")), 0)
         << read_text(dir + "/resumed.log");
