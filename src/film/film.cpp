@@ -183,7 +183,7 @@ Image Film::get_image(double splat_scale, std::map<std::string, std::string> *me
             }
             if (!splats.empty())
                 for (int c = 0; c < 3; ++c) {
-                    double splat = double(splats[i * 3 + c]) * SplatBuffer::kUnit;
+                    double splat = fixed_point::value(splats[i * 3 + c]);
                     sensor[c] += splat_scale * splat / filter_integral_;
                 }
             RGB v{float(sensor[0]), float(sensor[1]), float(sensor[2])};
@@ -238,7 +238,7 @@ void Film::add_bucket_channels(Image &image, double splat_scale, std::map<std::s
             double value = 0;
             if (!pixels_.empty() && pixels_[i].weight_sum != 0)
                 value = fixed_point::value(bucket_sums_[i * n + b]) / fixed_point::value(pixels_[i].weight_sum);
-            if (!splats.empty()) value += splat_scale * double(splats[i * n + b]) * SplatBuffer::kUnit / filter_integral_;
+            if (!splats.empty()) value += splat_scale * fixed_point::value(splats[i * n + b]) / filter_integral_;
             channel.values[i] = float(value * CIE_Y_integral);
         }
         image.channels.push_back(std::move(channel));

@@ -2,7 +2,7 @@
 // the order of its terms. Floating-point addition is not associative; integer addition is. The
 // image is therefore the same bit for bit whatever the number of threads, whatever order
 // light-tracing splats arrive in, and whether the samples were taken by one process or shared
-// between the ranks of an MPI job and added together afterwards (cli/distributed_render.h).
+// between the ranks of an MPI job and added together afterwards (cli/process_group.h).
 //
 // Sums of values (camera samples, their filter weights, splats) are 64-bit integers in units of
 // 2^-28: rounding is below 2e-9 absolute, far under what any image format shows, and the range
@@ -27,9 +27,6 @@ template <> struct Units<int64_t> {
 template <> struct Units<Wide> {
     static constexpr double unit = 0x1p-64, limit = 0x1p125;
 };
-
-inline constexpr double kUnit = Units<int64_t>::unit;
-inline constexpr double kLimit = Units<int64_t>::limit;
 
 // Adds v (in value units) to sum, rounded to the nearest unit; returns false if the term or the
 // sum left the range (the sum is then clamped or wrapped, and the caller reports it).

@@ -67,8 +67,6 @@ void SplatBuffer::apply(int band, std::vector<Pending> &queue) {
         y1 = std::min(y1, band_y1);
         for (int x = x0; x < x1; ++x) weight_x[x - x0] = filter_->evaluate_x(s.p.x - x - 0.5f);
         for (int y = y0; y < y1; ++y) weight_y[y - y0] = filter_->evaluate_y(s.p.y - y - 0.5f);
-        double units_per_weight[4];
-        for (int i = 0; i < s.v.count; ++i) units_per_weight[i] = double(s.v.value[i]) / kUnit;
         for (int y = y0; y < y1; ++y) {
             if (weight_y[y - y0] == 0) continue;
             int64_t *row = &sums_[(size_t(y - min_.y) * width) * channels_];
@@ -76,15 +74,8 @@ void SplatBuffer::apply(int band, std::vector<Pending> &queue) {
                 const float w = weight_x[x - x0] * weight_y[y - y0];
                 if (w == 0) continue;
                 int64_t *sum = &row[size_t(x - min_.x) * channels_];
-                for (int i = 0; i < s.v.count; ++i) {
-                    double units = std::nearbyint(double(w) * units_per_weight[i]);
-                    if (std::abs(units) > fixed_point::kLimit) {
-                        overflow = true;
-                        units = std::copysign(fixed_point::kLimit, units);
-                    }
-                    int64_t &channel_sum = sum[s.v.channel[i]];
-                    if (__builtin_add_overflow(channel_sum, int64_t(units), &channel_sum)) overflow = true;
-                }
+                for (int i = 0; i < s.v.count; ++i)
+                    if (!fixed_point::add(sum[s.v.channel[i]], double(w) * double(s.v.value[i]))) overflow = true;
             }
         }
     }

@@ -65,7 +65,6 @@ class SplatBuffer {
     // point, or empty if nothing was ever splatted.
     const std::vector<int64_t> &sums() const { return sums_; }
     int channels() const { return channels_; }
-    static constexpr double kUnit = fixed_point::kUnit;
     // Replaces the sums (a checkpoint's; empty or channels() per pixel) and drops what is queued.
     void restore(std::vector<int64_t> sums);
     // After flush(), the sums to change in place (a distributed render's reduction), allocated
