@@ -36,7 +36,11 @@ class WavelengthDensity {
     float sample(float u) const;
 
   private:
+    // The bin whose cumulative range holds u: the last b with cdf_[b] <= u, within [0, bins).
+    int bin_of(float u) const;
+
     std::vector<float> pdf_, cdf_; // per bin of BinWidth nm from LambdaMin; cdf_ has one more entry
+    std::vector<int> guide_;       // guide_[k] = bin_of(k / bins), where sample() starts looking
 };
 
 } // namespace caustica

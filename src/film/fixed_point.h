@@ -31,10 +31,17 @@ template <> struct Units<Wide> {
 // Adds v (in value units) to sum, rounded to the nearest unit; returns false if the term or the
 // sum left the range (the sum is then clamped or wrapped, and the caller reports it).
 template <typename Sum> bool add(Sum &sum, double v) {
-    double units = std::nearbyint(v / Units<Sum>::unit);
-    const bool ok = std::abs(units) <= Units<Sum>::limit;
-    if (!ok) units = std::copysign(Units<Sum>::limit, units);
-    return !__builtin_add_overflow(sum, Sum(units), &sum) && ok;
+    const double scaled = v / Units<Sum>::unit; // exact: the unit is a power of two
+    // At and beyond the limit doubles are integers, so testing before rounding is the same test.
+    const bool ok = std::abs(scaled) <= Units<Sum>::limit;
+    Sum units;
+    if (!ok)
+        units = Sum(std::copysign(Units<Sum>::limit, scaled));
+    else if constexpr (sizeof(Sum) == sizeof(long long))
+        units = Sum(std::llrint(scaled)); // one instruction, where nearbyint is a library call
+    else
+        units = Sum(std::nearbyint(scaled));
+    return !__builtin_add_overflow(sum, units, &sum) && ok;
 }
 
 template <typename Sum> double value(Sum sum) { return double(sum) * Units<Sum>::unit; }

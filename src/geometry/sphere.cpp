@@ -46,6 +46,31 @@ Sphere::Sphere(const Transform &render_from_object, bool reverse_orientation, fl
         }
         render_area_ = sum * radius_ * dz * dphi;
     }
+
+    // The transform stretches no direction by more than the root of its columns' squared lengths
+    // (the Frobenius norm bounds the spectral norm); a similarity stretches every direction by
+    // one column's length.
+    const Vec3f columns[3] = {render_vector({1, 0, 0}), render_vector({0, 1, 0}), render_vector({0, 0, 1})};
+    const double stretch2 = is_similarity() ? length_squared(Vec3d(columns[0]))
+                                            : length_squared(Vec3d(columns[0])) + length_squared(Vec3d(columns[1])) +
+                                                  length_squared(Vec3d(columns[2]));
+    bound_center_ = render_point({0, 0, 0}).to_float();
+    bound_center_extent_ = max_component(abs(bound_center_));
+    bound_radius_ = float(radius_ * std::sqrt(stretch2) * (1 + 1e-4));
+}
+
+bool Sphere::surely_missed(Vec3f o, Vec3f d) const {
+    // Float rounding moves o - c, and the distances computed from it, by a few 1e-7 times the
+    // coordinates' magnitudes (c's own rounding included); the ball is widened by 3e-5 times them,
+    // a hundredfold margin. NaNs and zero directions compare false: they are left to the exact test.
+    const float reach = bound_radius_ + 3e-5f * (max_component(abs(o)) + bound_center_extent_);
+    const float reach2 = reach * reach;
+    const Vec3f oc = o - bound_center_;
+    const float b = dot(oc, d);
+    // Outside the ball and moving away from its centre.
+    if (b > 0 && length_squared(oc) > reach2) return true;
+    // The line's closest approach to the centre lies outside the ball.
+    return length_squared(oc - d * (b / length_squared(d))) > reach2;
 }
 
 Bounds3f Sphere::bounds() const {
@@ -94,6 +119,7 @@ std::optional<double> Sphere::hit_object(Vec3d o, Vec3d d, double t_max, Vec3d *
 }
 
 std::optional<float> Sphere::nth_hit(Vec3f o, Vec3f d, float t_max, int n) const {
+    if (surely_missed(o, d)) return std::nullopt;
     std::optional<double> t = hit_object(object_point(o), object_vector(d), t_max, nullptr, n);
     if (!t) return std::nullopt;
     float tf = float(*t);

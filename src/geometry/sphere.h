@@ -32,6 +32,10 @@ class Sphere : public AnalyticShape {
     // Object-space hit n (0: the first) with 0 < t < t_max (object point projected onto the
     // sphere).
     std::optional<double> hit_object(Vec3d o, Vec3d d, double t_max, Vec3d *p_hit, int n = 0) const;
+    // Whether the line through o along d certainly misses a ball around the whole sphere, decided
+    // in float with a margin far above float's rounding: most rays tested never come near the
+    // sphere, and this spares them the exact test in double (which it never contradicts).
+    bool surely_missed(Vec3f o, Vec3f d) const;
     Vec3d project_to_surface(Vec3d p) const;
     Vec2f uv_of(Vec3d p_object) const;
     bool uses_cone_sampling(Vec3d ref_object) const;
@@ -40,6 +44,10 @@ class Sphere : public AnalyticShape {
     double radius_, z_min_, z_max_, theta_z_min_, theta_z_max_, phi_max_;
     bool is_full_;
     double render_area_;
+    // A ball in render space that holds the sphere: its centre (and that centre's largest
+    // coordinate magnitude), and its radius widened by a relative 1e-4 (see surely_missed).
+    Vec3f bound_center_;
+    float bound_center_extent_, bound_radius_;
 };
 
 } // namespace caustica

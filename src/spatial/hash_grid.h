@@ -47,11 +47,14 @@ class HashGrid {
     template <class Iterator, class Position, class Less>
     void build(Iterator first, Iterator last, float max_radius, Position position, Less less);
 
-    // Calls visit(begin, end) with the index range, into the built sequence, of each bucket that
-    // may hold an item within radius of center: every such item is in one of the ranges (items
-    // outside the ball are too: the caller tests distances), and no range is visited twice.
-    // Requires 0 <= radius <= max_radius (std::invalid_argument otherwise).
-    template <class Visit> void for_each_candidate_range(Vec3f center, float radius, Visit visit) const;
+    // The index ranges [begin, end), into the built sequence, of the non-empty buckets that may
+    // hold an item within radius of center, at most 27: every such item is in one of the ranges
+    // (items outside the ball are too: the caller tests distances), and no range is listed twice.
+    // Returns their number. Requires 0 <= radius <= max_radius (std::invalid_argument otherwise).
+    struct Range {
+        uint32_t begin, end;
+    };
+    int candidate_ranges(Vec3f center, float radius, std::array<Range, 27> &ranges) const;
 
     // The bucket table's bytes.
     size_t memory_bytes() const { return bucket_starts_.size() * sizeof(uint32_t); }
@@ -148,15 +151,20 @@ void HashGrid::build(Iterator first, Iterator last, float max_radius, Position p
     bucket_starts_.back() = uint32_t(n);
 }
 
-template <class Visit> void HashGrid::for_each_candidate_range(Vec3f center, float radius, Visit visit) const {
+inline int HashGrid::candidate_ranges(Vec3f center, float radius, std::array<Range, 27> &ranges) const {
     if (!(radius >= 0 && radius <= max_radius_))
         throw std::invalid_argument("HashGrid: query radius outside [0, max_radius]");
     std::array<uint32_t, 27> buckets;
     const int count = overlapping_buckets(center, radius, buckets);
+    // The buckets lie at unrelated places in a table too large for the cache: ask for all of
+    // them before reading any, so that their misses overlap instead of following one another.
+    for (int i = 0; i < count; ++i) __builtin_prefetch(&bucket_starts_[buckets[i]]);
+    int ranges_count = 0;
     for (int i = 0; i < count; ++i) {
         const uint32_t begin = bucket_starts_[buckets[i]], end = bucket_starts_[buckets[i] + 1];
-        if (begin < end) visit(begin, end);
+        if (begin < end) ranges[ranges_count++] = Range{begin, end};
     }
+    return ranges_count;
 }
 
 } // namespace caustica

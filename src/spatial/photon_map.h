@@ -92,10 +92,14 @@ template <class Record> class PhotonMap {
     template <class Visit> void for_each_within(Vec3f center, float radius, Visit visit) const {
         if (search_ == PhotonSearch::HashGrid) {
             const float radius2 = radius * radius;
-            grid_.for_each_candidate_range(center, radius, [&](uint32_t begin, uint32_t end) {
-                for (auto it = storage_.begin() + begin, last = storage_.begin() + end; it != last; ++it)
+            std::array<HashGrid::Range, 27> ranges;
+            const int count = grid_.candidate_ranges(center, radius, ranges);
+            // Each range's photons are contiguous, but the ranges are far apart: start loading the
+            // first photons of all of them before testing any (as for the buckets themselves).
+            for (int i = 0; i < count; ++i) __builtin_prefetch(&storage_[ranges[i].begin]);
+            for (int i = 0; i < count; ++i)
+                for (auto it = storage_.begin() + ranges[i].begin, last = storage_.begin() + ranges[i].end; it != last; ++it)
                     if (distance_squared(it->p, center) < radius2) visit(it->record);
-            });
             return;
         }
         std::vector<uint32_t> &found = found_.local();

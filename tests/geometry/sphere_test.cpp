@@ -1,3 +1,4 @@
+#include "core/rng.h"
 #include "geometry/sphere.h"
 #include "geometry_test_util.h"
 
@@ -127,6 +128,48 @@ TEST(Sphere, NormalOrientationRules) {
         Vec3f cross_n = normalize(cross(si.dpdu, si.dpdv));
         expect_near_vec(si.n, c.reverse ? -cross_n : cross_n, 1e-5f);
         expect_near_vec(si.shading.n, si.n, 1e-6f);
+    }
+}
+
+// Sphere::nth_hit first rejects, in float, the rays that certainly miss a ball around the
+// sphere. Rays through the rim, where that rejection is closest to being wrong, must still hit
+// exactly when the line passes inside: checked against the line's distance from the centre in
+// double, for spheres far from the origin (where float rounds coarsest), stretched ones, and
+// ray directions of any length.
+TEST(Sphere, FloatRejectionNeverDropsAHitAtTheRim) {
+    struct Case {
+        Transform t;
+        double radius; // along every axis: the stretched case is tested through its x axis
+    } cases[] = {{Transform::translate({3e4f, -2e4f, 1e4f}) * Transform::scale(0.01f, 0.01f, 0.01f), 0.01},
+                 {Transform::translate({-1, 2, 3}) * Transform::scale(5, 5, 5), 5},
+                 {Transform::translate({1e3f, 0, 0}) * Transform::scale(1, 4, 9), 1}};
+    Rng rng(7, 0);
+    for (const Case &c : cases) {
+        auto s = sphere(1, c.t);
+        const Vec3d center(c.t.apply_point({0, 0, 0}));
+        int hits = 0, misses = 0;
+        for (int i = 0; i < 20000; ++i) {
+            // A line along y or z (so a stretched sphere's section through x is a circle of the
+            // given radius), at distance (1 + e) radius from the centre along x, e in +-1e-3 or
+            // +-4 float spacings of the centre's coordinates, whichever is wider.
+            const double spacing = std::ldexp(1.0, std::ilogb(std::max({std::abs(center.x), std::abs(center.y), std::abs(center.z), 1.0})) - 23);
+            const double e = (rng.uniform() * 2 - 1) * std::max(1e-3, 4 * spacing / c.radius);
+            const Vec3f along = rng.uniform() < 0.5f ? Vec3f{0, 1, 0} : Vec3f{0, 0, 1};
+            const float length = std::ldexp(1.f, int(rng.uniform() * 8) - 4);
+            const Vec3f o = (Vec3d{center.x + (1 + e) * c.radius, center.y, center.z} -
+                             Vec3d(along) * (50.0 * c.radius))
+                                .to_float();
+            // The float ray as it is: its true distance from the centre, in double.
+            const Vec3d od = Vec3d(o) - center;
+            const double distance = std::sqrt(od.x * od.x + (along.y ? od.z * od.z : od.y * od.y));
+            if (std::abs(distance / c.radius - 1) < 1e-6) continue; // too close to call in double
+            const bool expected = distance < c.radius;
+            EXPECT_EQ(s->intersect_t(o, along * length, Infinity).has_value(), expected)
+                << "distance / radius - 1 = " << distance / c.radius - 1;
+            (expected ? hits : misses)++;
+        }
+        EXPECT_GT(hits, 1000);
+        EXPECT_GT(misses, 1000);
     }
 }
 
