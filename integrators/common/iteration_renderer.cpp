@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -162,6 +163,32 @@ bool IterationRenderer::for_each_pixel(int iteration, int dimension, const Itera
                 work(pixel, size_t(y - bounds.min.y) * width + size_t(x - bounds.min.x), ctx);
                 ts.sample_scratch->reset();
             }
+    });
+    return !stopped;
+}
+
+bool IterationRenderer::for_each_pixel_in_order(int iteration, int dimension, std::span<const uint32_t> order,
+                                                const IterationPixelFunction &work) {
+    if (share_pixels_) throw std::logic_error("IterationRenderer: an ordered pass with shared pixels");
+    const PixelBounds &bounds = scene_.film->pixel_bounds();
+    const size_t width = size_t(bounds.width());
+    constexpr size_t kChunk = 256;
+    std::atomic<bool> stopped{false};
+    tbb::parallel_for(size_t(0), (order.size() + kChunk - 1) / kChunk, [&](size_t chunk) {
+        ThreadState &ts = threads_->states.local();
+        IterationPixelContext ctx{*ts.sampler, *ts.sample_scratch, *ts.iteration_scratch, ts.rays,
+                                  ts.non_finite};
+        for (size_t i = chunk * kChunk; i < std::min(order.size(), (chunk + 1) * kChunk); ++i) {
+            if (cancelled()) {
+                stopped = true;
+                return;
+            }
+            const size_t index = order[i];
+            const Vec2i pixel{bounds.min.x + int(index % width), bounds.min.y + int(index / width)};
+            ts.sampler->start_pixel_sample(pixel, iteration, dimension);
+            work(pixel, index, ctx);
+            ts.sample_scratch->reset();
+        }
     });
     return !stopped;
 }

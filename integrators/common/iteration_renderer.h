@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 
 namespace caustica {
 
@@ -61,6 +62,12 @@ class IterationRenderer {
     // rank's tiles, when pixels are shared), with the thread's sampler started at (pixel,
     // iteration, dimension). Returns false if cancelled.
     bool for_each_pixel(int iteration, int dimension, const IterationPixelFunction &work);
+
+    // The same pass over the pixels in the given order of pixel indices (each index once; not
+    // with shared pixels): work that reads data kept per group of pixels visits one group's
+    // pixels together, while its data stay in cache.
+    bool for_each_pixel_in_order(int iteration, int dimension, std::span<const uint32_t> order,
+                                 const IterationPixelFunction &work);
 
     // A parallel pass over path_count paths that belong to no pixel (photons): work(index, ctx),
     // with the sampler started at a pixel and sample index derived from (iteration, index); when

@@ -16,6 +16,11 @@ void WavelengthGroups::start_iteration(const Scene &scene, int iteration, size_t
     group_of_pixel_.resize(pixel_count);
     for (size_t i = 0; i < pixel_count; ++i)
         group_of_pixel_[i] = uint8_t(hash_values(seed_, iteration, i) % uint64_t(count_));
+    std::vector<size_t> group_start(count_ + 1, 0);
+    for (size_t i = 0; i < pixel_count; ++i) ++group_start[group_of_pixel_[i] + 1];
+    for (int g = 0; g < count_; ++g) group_start[g + 1] += group_start[g];
+    pixels_by_group_.resize(pixel_count);
+    for (size_t i = 0; i < pixel_count; ++i) pixels_by_group_[group_start[group_of_pixel_[i]]++] = uint32_t(i);
     group_of_light_path_.resize(light_path_count);
     light_paths_.assign(count_, 0);
     for (size_t i = 0; i < light_path_count; ++i) {

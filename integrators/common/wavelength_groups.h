@@ -39,11 +39,14 @@ class WavelengthGroups {
     const SampledWavelengths &wavelengths(int group) const { return wavelengths_[group]; }
     // Light paths traced with the group's wavelengths this iteration.
     size_t light_path_count(int group) const { return light_paths_[group]; }
+    // The pixel indices of group 0, then of group 1, ..., each group's in increasing order.
+    const std::vector<uint32_t> &pixels_by_group() const { return pixels_by_group_; }
 
   private:
     int count_;
     uint64_t seed_;
     std::vector<uint8_t> group_of_pixel_, group_of_light_path_;
+    std::vector<uint32_t> pixels_by_group_;
     std::vector<SampledWavelengths> wavelengths_;
     std::vector<size_t> light_paths_;
 };

@@ -622,8 +622,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             surface_photons[g].clear();
             medium_photons[g].clear();
         }
-        bool completed = renderer.for_each_pixel(iteration, kLightPathDimension,
-                                                 [&](Vec2i, size_t index, IterationPixelContext &pixel) {
+        // A group's pixels together, as the camera pass visits them (see there), so that each
+        // thread stores the light vertices in the order they are read again.
+        bool completed = renderer.for_each_pixel_in_order(iteration, kLightPathDimension, groups.pixels_by_group(),
+                                                          [&](Vec2i, size_t index, IterationPixelContext &pixel) {
             const int g = groups.group_of_pixel(index);
             std::vector<LightVertex> &store = light_vertices.local();
             if (!keep_light_vertices) store.clear();
@@ -652,9 +654,11 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             for (int g = 0; g < groups.count(); ++g) stored += surface_photons[g].size() + medium_photons[g].size();
         stats.stored_light_vertices = std::max<uint64_t>(stats.stored_light_vertices, stored);
 
-        // Pass 2: one camera subpath per pixel.
+        // Pass 2: one camera subpath per pixel, a wavelength group's pixels together, so that the
+        // merges of consecutive pixels search the same photon map while it is in cache.
         Film &film = *scene.film;
-        return renderer.for_each_pixel(iteration, 0, [&](Vec2i pixel, size_t index, IterationPixelContext &ctx) {
+        return renderer.for_each_pixel_in_order(iteration, 0, groups.pixels_by_group(),
+                                                [&](Vec2i pixel, size_t index, IterationPixelContext &ctx) {
             const int g = groups.group_of_pixel(index);
             StoredPath light_path;
             if (keep_light_vertices) {
