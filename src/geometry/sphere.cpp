@@ -103,6 +103,11 @@ std::optional<double> Sphere::hit_object(Vec3d o, Vec3d d, double t_max, Vec3d *
     for (double t : {t0, t1}) {
         if (!(t > 0)) continue;
         if (!(t < t_max)) break;
+        // The point only matters to a cut sphere and to callers that ask for it.
+        if (is_full_ && !p_hit) {
+            if (n-- > 0) continue;
+            return t;
+        }
         Vec3d p = project_to_surface(o + d * t);
         if (!is_full_) {
             double phi = std::atan2(p.y, p.x);
