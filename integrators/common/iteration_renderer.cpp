@@ -167,30 +167,37 @@ bool IterationRenderer::for_each_pixel(int iteration, int dimension, const Itera
     return !stopped;
 }
 
+template <class Visit> bool IterationRenderer::for_each_in_chunks(size_t count, bool shared, const Visit &visit) {
+    constexpr size_t kChunk = 256;
+    std::atomic<bool> stopped{false};
+    tbb::parallel_for(size_t(0), (count + kChunk - 1) / kChunk, [&](size_t chunk) {
+        if (shared && chunk % share_.ranks() != size_t(share_.rank())) return;
+        ThreadState &ts = threads_->states.local();
+        IterationPixelContext ctx{*ts.sampler, *ts.sample_scratch, *ts.iteration_scratch, ts.rays,
+                                  ts.non_finite};
+        for (size_t i = chunk * kChunk; i < std::min(count, (chunk + 1) * kChunk); ++i) {
+            if (cancelled()) {
+                stopped = true;
+                return;
+            }
+            visit(i, *ts.sampler, ctx);
+            ts.sample_scratch->reset();
+        }
+    });
+    return !stopped;
+}
+
 bool IterationRenderer::for_each_pixel_in_order(int iteration, int dimension, std::span<const uint32_t> order,
                                                 const IterationPixelFunction &work) {
     if (share_pixels_) throw std::logic_error("IterationRenderer: an ordered pass with shared pixels");
     const PixelBounds &bounds = scene_.film->pixel_bounds();
     const size_t width = size_t(bounds.width());
-    constexpr size_t kChunk = 256;
-    std::atomic<bool> stopped{false};
-    tbb::parallel_for(size_t(0), (order.size() + kChunk - 1) / kChunk, [&](size_t chunk) {
-        ThreadState &ts = threads_->states.local();
-        IterationPixelContext ctx{*ts.sampler, *ts.sample_scratch, *ts.iteration_scratch, ts.rays,
-                                  ts.non_finite};
-        for (size_t i = chunk * kChunk; i < std::min(order.size(), (chunk + 1) * kChunk); ++i) {
-            if (cancelled()) {
-                stopped = true;
-                return;
-            }
-            const size_t index = order[i];
-            const Vec2i pixel{bounds.min.x + int(index % width), bounds.min.y + int(index / width)};
-            ts.sampler->start_pixel_sample(pixel, iteration, dimension);
-            work(pixel, index, ctx);
-            ts.sample_scratch->reset();
-        }
+    return for_each_in_chunks(order.size(), false, [&](size_t i, Sampler &sampler, IterationPixelContext &ctx) {
+        const size_t index = order[i];
+        const Vec2i pixel{bounds.min.x + int(index % width), bounds.min.y + int(index / width)};
+        sampler.start_pixel_sample(pixel, iteration, dimension);
+        work(pixel, index, ctx);
     });
-    return !stopped;
 }
 
 bool IterationRenderer::for_each_path(int iteration, size_t path_count, int dimension,
@@ -200,26 +207,12 @@ bool IterationRenderer::for_each_path(int iteration, size_t path_count, int dime
     const PixelBounds &bounds = scene_.film->pixel_bounds();
     const size_t width = size_t(bounds.width());
     const size_t rounds = (path_count + pixel_count_ - 1) / pixel_count_;
-    constexpr size_t kChunk = 256;
-    std::atomic<bool> stopped{false};
-    tbb::parallel_for(size_t(0), (path_count + kChunk - 1) / kChunk, [&](size_t chunk) {
-        if (share_pixels_ && chunk % share_.ranks() != size_t(share_.rank())) return;
-        ThreadState &ts = threads_->states.local();
-        IterationPixelContext ctx{*ts.sampler, *ts.sample_scratch, *ts.iteration_scratch, ts.rays,
-                                  ts.non_finite};
-        for (size_t i = chunk * kChunk; i < std::min(path_count, (chunk + 1) * kChunk); ++i) {
-            if (cancelled()) {
-                stopped = true;
-                return;
-            }
-            const size_t p = i % pixel_count_;
-            Vec2i pixel{bounds.min.x + int(p % width), bounds.min.y + int(p / width)};
-            ts.sampler->start_pixel_sample(pixel, int(size_t(iteration) * rounds + i / pixel_count_), dimension);
-            work(i, ctx);
-            ts.sample_scratch->reset();
-        }
+    return for_each_in_chunks(path_count, share_pixels_, [&](size_t i, Sampler &sampler, IterationPixelContext &ctx) {
+        const size_t p = i % pixel_count_;
+        const Vec2i pixel{bounds.min.x + int(p % width), bounds.min.y + int(p / width)};
+        sampler.start_pixel_sample(pixel, int(size_t(iteration) * rounds + i / pixel_count_), dimension);
+        work(i, ctx);
     });
-    return !stopped;
 }
 
 } // namespace caustica

@@ -89,6 +89,9 @@ class IterationRenderer {
   private:
     struct ThreadState;
     bool cancelled() const;
+    // visit(i, sampler, ctx) for i in [0, count) in parallel chunks (this rank's chunks only, if
+    // `shared`), each with the thread's sampler and a fresh sample scratch; false if cancelled.
+    template <class Visit> bool for_each_in_chunks(size_t count, bool shared, const Visit &visit);
     double elapsed() const;
     // Adds the threads' counters to the stats and brings their time up to date.
     void flush_counters();
