@@ -62,7 +62,8 @@ float WavelengthDensity::sample(float u) const {
     // The bin whose cumulative range holds u (empty bins are never chosen: their range is empty):
     // bin_of(u), found from the guide's bin for the start of u's slice of [0, 1) by the few steps
     // to it (Chen and Asau 1974's guide table), not by a binary search over every bin.
-    int b = guide_[std::clamp(int(u * Bins), 0, Bins - 1)];
+    const float slice = u * Bins; // compared before converting, so that no value is out of int's range
+    int b = guide_[slice >= 0 ? (slice < Bins ? int(slice) : Bins - 1) : 0];
     while (b > 0 && cdf_[b] > u) --b;
     while (b < Bins - 1 && !(cdf_[b + 1] > u)) ++b;
     const float width = cdf_[b + 1] - cdf_[b];
