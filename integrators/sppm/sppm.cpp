@@ -434,10 +434,12 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 trace_photon(scene, max_depth_, groups.wavelengths(g), time, ctx, surface_maps[g], medium_maps[g]);
             });
             if (renderer.share().any(!completed)) return false;
+            std::vector<SppmPhotonMap *> maps;
             for (int g = 0; g < groups.count(); ++g) {
-                surface_maps[g].gather(renderer.share());
-                medium_maps[g].gather(renderer.share());
+                maps.push_back(&surface_maps[g]);
+                maps.push_back(&medium_maps[g]);
             }
+            SppmPhotonMap::gather(maps, renderer.share());
             // The grids are laid out for the largest radius (of every rank's pixels).
             float max_surface_radius = 0, max_medium_radius = 0;
             for (size_t index = 0; index < estimates_.size(); ++index) {

@@ -31,6 +31,8 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <span>
+#include <stdexcept>
 #include <vector>
 
 namespace caustica {
@@ -57,21 +59,43 @@ template <class Record> class PhotonMap {
     void clear() { storage_.clear(); }
     // Safe from any number of threads at once, between clear() and build().
     void add(Vec3f p, const Record &record) { storage_.push_back(Photon{p, record}); }
-    // A distributed render: replaces the photons this rank added since clear() with those every
-    // rank added (RenderShare::gather_all; collective), so that each rank's map holds them all.
-    // The queries see the same photons in the same order as in one process's map.
-    void gather(const RenderShare &share) {
+    // A distributed render: replaces the photons this rank added to each map since clear() with
+    // those every rank added to it (RenderShare::gather_all, one exchange for all the maps;
+    // collective: every rank passes its maps in the same order), so that each rank's maps hold
+    // them all, and their queries see the same photons in the same order as one process's maps.
+    static void gather(std::span<PhotonMap *const> maps, const RenderShare &share) {
         if (share.ranks() == 1) return;
-        storage_.close();
-        std::vector<char> mine(storage_.size() * sizeof(Photon));
-        for (size_t i = 0; i < storage_.size(); ++i) std::memcpy(&mine[i * sizeof(Photon)], &storage_[i], sizeof(Photon));
-        const std::vector<char> all = share.gather_all(std::move(mine));
-        storage_.clear();
-        for (size_t offset = 0; offset + sizeof(Photon) <= all.size(); offset += sizeof(Photon)) {
-            Photon photon;
-            std::memcpy(&photon, &all[offset], sizeof(Photon));
-            storage_.push_back(photon);
+        // Each rank's bytes: per map, its photon count, then its photons.
+        std::vector<char> mine;
+        auto append = [&](const void *data, size_t bytes) {
+            mine.insert(mine.end(), static_cast<const char *>(data), static_cast<const char *>(data) + bytes);
+        };
+        for (PhotonMap *map : maps) {
+            map->storage_.close();
+            const uint64_t count = map->storage_.size();
+            append(&count, sizeof(count));
+            for (size_t i = 0; i < count; ++i) append(&map->storage_[i], sizeof(Photon));
         }
+        const std::vector<char> all = share.gather_all(std::move(mine));
+        for (PhotonMap *map : maps) map->storage_.clear();
+        // The ranks' bytes follow one another in rank order, so each map receives rank 0's photons,
+        // then rank 1's, and so on.
+        size_t offset = 0;
+        auto read = [&](void *data, size_t bytes) {
+            if (offset + bytes > all.size()) throw std::runtime_error("PhotonMap::gather: truncated exchange");
+            std::memcpy(data, &all[offset], bytes);
+            offset += bytes;
+        };
+        while (offset < all.size())
+            for (PhotonMap *map : maps) {
+                uint64_t count;
+                read(&count, sizeof(count));
+                for (uint64_t i = 0; i < count; ++i) {
+                    Photon photon;
+                    read(&photon, sizeof(Photon));
+                    map->storage_.push_back(photon);
+                }
+            }
     }
     // Indexes the photons added since clear() for queries of radius at most max_radius.
     void build(float max_radius) {
