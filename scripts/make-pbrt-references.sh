@@ -36,6 +36,7 @@ hard/narrow-line 4096
 hard/near-specular-glass 4096
 hard/skin-lens 32768
 hard/coated-low-roughness 4096
+hard/dense-ball 8192
 textures/noise-textures 256
 textures/bump-and-normal-map 256
 textures/alpha-cutouts 4096

@@ -174,6 +174,7 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     origin.at_infinity = light.type() == LightType::Infinite || light.type() == LightType::DeltaDirection;
     origin.si.p = les->ray.o;
     origin.si.n = origin.si.shading.n = les->n;
+    origin.si.error_scale = les->error_scale;
     origin.si.uv = les->uv;
     // Light paths start in the light's medium (for an area light, that on its shape's outside).
     origin.medium = light.medium();
@@ -201,7 +202,7 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
 // The fraction of light that travels between two vertices: zero when a surface is in the way,
 // else the transmittance of the media along the segment.
 SampledSpectrum connection_transmittance(const SubpathContext &ctx, const PathVertex &a, const PathVertex &b) {
-    return transmittance(ctx.scene, spawn_ray_to(a.p(), a.ng(), b.p(), b.ng(), ctx.time),
+    return transmittance(ctx.scene, spawn_ray_to(a.p(), a.ng(), a.si.error_scale, b.p(), b.ng(), b.si.error_scale, ctx.time),
                          a.medium_towards(b.p() - a.p()), ctx.lambda, ctx.sample.rays);
 }
 
@@ -272,14 +273,16 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         // A point at infinity stands for its direction; any point along it serves.
         sampled.si.p = ls->is_infinite ? pt.p() + ls->wi : ls->p_light;
         sampled.si.n = sampled.si.shading.n = ls->is_infinite ? Vec3f{} : ls->n_light;
+        sampled.si.error_scale = ls->error_scale_light;
         sampled.beta = ls->L / (chosen->pmf * ls->pdf);
         sampled.pdf_fwd = sampled.pdf_light_origin(scene, pt);
         L = pt.beta * pt.f(ls->wi, TransportMode::Radiance) * pt.cosine(ls->wi, TransportMode::Radiance) *
             sampled.beta;
         if (L.is_black()) return c;
         // A medium vertex has no normal, so its rays start at the point itself.
-        Ray shadow = ls->is_infinite ? spawn_ray(pt.p(), pt.ng(), ls->wi, ctx.time)
-                                     : spawn_ray_to(pt.p(), pt.ng(), ls->p_light, ls->n_light, ctx.time);
+        Ray shadow = ls->is_infinite ? spawn_ray(pt.p(), pt.ng(), pt.si.error_scale, ls->wi, ctx.time)
+                                     : spawn_ray_to(pt.p(), pt.ng(), pt.si.error_scale, ls->p_light, ls->n_light,
+                                                    ls->error_scale_light, ctx.time);
         L *= transmittance(scene, shadow, pt.medium_towards(ls->wi), ctx.lambda, rays);
     } else {
         // Join two scattering vertices with a shadow ray: both scattering functions and the

@@ -54,7 +54,7 @@ SampledSpectrum sample_direct_lighting(const Scene &scene, const SurfaceInteract
                                                                                           : bsdf.pdf(si.wo, wi, mode)};
     };
     auto shadow_ray = [&](const LightLiSample &ls) {
-        Ray ray = ls.is_infinite ? si.spawn_ray(ls.wi) : si.spawn_ray_to(ls.p_light, ls.n_light);
+        Ray ray = ls.is_infinite ? si.spawn_ray(ls.wi) : si.spawn_ray_to(ls.p_light, ls.n_light, ls.error_scale_light);
         return std::pair{ray, medium_after(si, ls.wi, medium)};
     };
     return estimate_direct(scene, ctx, lambda, sampler, rays, strategy, scattering, shadow_ray);
@@ -69,7 +69,7 @@ SampledSpectrum sample_direct_lighting_in_medium(const Scene &scene, Vec3f p, fl
         return std::pair{SampledSpectrum(value), value};
     };
     auto shadow_ray = [&](const LightLiSample &ls) {
-        Ray ray = ls.is_infinite ? Ray{p, ls.wi, Infinity, time} : spawn_ray_to(p, Vec3f{}, ls.p_light, ls.n_light, time);
+        Ray ray = ls.is_infinite ? Ray{p, ls.wi, Infinity, time} : spawn_ray_to(p, Vec3f{}, 0, ls.p_light, ls.n_light, ls.error_scale_light, time);
         return std::pair{ray, &medium};
     };
     return estimate_direct(scene, LightSampleContext{p, {}, {}}, lambda, sampler, rays, strategy, scattering,

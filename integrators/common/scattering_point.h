@@ -23,12 +23,13 @@ struct ScatteringPoint {
     const Medium *medium_front = nullptr, *medium_back = nullptr;
     float time = 0;     // the path's time (geometry/ray.h), for the rays that leave or join it
     float coverage = 1; // surface points: SurfaceInteraction::coverage
+    float error_scale = 0; // surface points: SurfaceInteraction::error_scale
 
     // The surface hit si, with its BSDF, reached by a path travelling in `arrived_in`: the media
     // on its two sides follow from the hit's medium interface (medium_after).
     static ScatteringPoint on_surface(const SurfaceInteraction &si, const BSDF &bsdf, const Medium *arrived_in) {
         return ScatteringPoint{si.p, si.n, si.shading.n, si.wo, bsdf, nullptr, medium_after(si, si.n, arrived_in),
-                               medium_after(si, -si.n, arrived_in), si.time, si.coverage};
+                               medium_after(si, -si.n, arrived_in), si.time, si.coverage, si.error_scale};
     }
     // The scattering event at `distance` along ray inside `medium`.
     static ScatteringPoint in_medium_along(const Ray &ray, float distance, const Medium *medium) {

@@ -26,7 +26,7 @@ SampledSpectrum transmittance(const Scene &scene, Ray ray, const Medium *medium,
         if (!hit) return T;
         // A boundary between media: continue on the other side, towards the same target.
         medium = medium_after(si, ray.d, medium);
-        ray = bounded ? Ray{offset_ray_origin(si.p, si.n, ray.d), {}, 1, ray.time}
+        ray = bounded ? Ray{offset_ray_origin(si.p, si.n, si.error_scale, ray.d), {}, 1, ray.time}
                       : si.spawn_ray(ray.d);
         if (bounded) ray.d = target - ray.o;
         ++rays;

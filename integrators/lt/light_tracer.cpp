@@ -68,7 +68,7 @@ void connect_light_vertex(const LightPathContext &ctx, const Light &light, const
     // light is seen from the side opposite to the sampled emission direction, p lies on the
     // wrong side and a ray spawned from it would start on the emitter; spawn_ray_to moves the
     // target to the lens's side and stops short of it, whichever side p is on.
-    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, p, les.n, les.ray.time), scene.camera_medium, lambda,
+    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, 0, p, les.n, les.error_scale, les.ray.time), scene.camera_medium, lambda,
                        ctx.sample.rays);
     splat(ctx, cs->p_raster, L, lambda);
 }
@@ -83,7 +83,7 @@ void connect_to_lens(const LightPathContext &ctx, const ScatteringPoint &point, 
     if (f.is_black()) return;
     SampledSpectrum L = throughput * f * cs->We / cs->pdf;
     if (L.is_black()) return;
-    L *= transmittance(ctx.scene, spawn_ray_to(point.p, point.ng, cs->p_lens, Vec3f{}, point.time),
+    L *= transmittance(ctx.scene, spawn_ray_to(point.p, point.ng, point.error_scale, cs->p_lens, Vec3f{}, 0, point.time),
                        point.medium_towards(cs->wi), lambda,
                        ctx.sample.rays);
     splat(ctx, cs->p_raster, L, lambda);

@@ -119,9 +119,10 @@ void add_photons(std::span<const LightVertex> path, const SampledWavelengths &la
     }
 }
 
-// A ray leaving point towards p_to (with normal n_to, zero if none) and stopping short of it.
-Ray spawn_ray_between(const ScatteringPoint &point, Vec3f p_to, Vec3f n_to) {
-    return spawn_ray_to(point.p, point.ng, p_to, n_to, point.time);
+// A ray leaving point towards p_to (with normal n_to, zero if none, and rounding scale
+// error_scale_to) and stopping short of it.
+Ray spawn_ray_between(const ScatteringPoint &point, Vec3f p_to, Vec3f n_to, float error_scale_to) {
+    return spawn_ray_to(point.p, point.ng, point.error_scale, p_to, n_to, error_scale_to, point.time);
 }
 
 // Contributions made with a terminated wavelength set (a dispersive refraction on either
@@ -190,7 +191,7 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
         ++ctx.pixel.non_finite;
         return;
     }
-    SampledSpectrum T = transmittance(scene, spawn_ray_between(point, cs->p_lens, Vec3f{}),
+    SampledSpectrum T = transmittance(scene, spawn_ray_between(point, cs->p_lens, Vec3f{}, 0),
                                       point.medium_towards(cs->wi), lambda, ctx.pixel.rays);
     if (T.is_black()) return;
     scene.film->add_splat(cs->p_raster, L * T, lambda);
@@ -334,8 +335,8 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
                                          pdf_reverse, ctx.w.at(point.in_medium()));
     SampledSpectrum L = scattering.f * ls->L * (1 / (chosen->pmf * ls->pdf * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
-    Ray shadow = ls->is_infinite ? spawn_ray(point.p, point.ng, ls->wi, point.time)
-                                 : spawn_ray_between(point, ls->p_light, ls->n_light);
+    Ray shadow = ls->is_infinite ? spawn_ray(point.p, point.ng, point.error_scale, ls->wi, point.time)
+                                 : spawn_ray_between(point, ls->p_light, ls->n_light, ls->error_scale_light);
     SampledSpectrum T = transmittance(scene, shadow, point.medium_towards(ls->wi), ctx.lambda, ctx.pixel.rays);
     if (T.is_black()) return {};
     return in_group_measure(L * T, ctx.lambda.secondary_terminated(), ctx.hero_scale);
@@ -363,7 +364,7 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
     const float w_camera = z.m.connected(light_dir_pdf_a, camera_pdf_reverse, ctx.w.at(camera.in_medium()));
     SampledSpectrum L = at_camera.f * at_light.f * v.beta * (1 / (dist2 * (w_light + 1 + w_camera)));
     if (L.is_black()) return {};
-    SampledSpectrum T = transmittance(ctx.it.scene, spawn_ray_between(camera, light.p, light.ng),
+    SampledSpectrum T = transmittance(ctx.it.scene, spawn_ray_between(camera, light.p, light.ng, light.error_scale),
                                       camera.medium_towards(d), ctx.lambda, ctx.pixel.rays);
     if (T.is_black()) return {};
     return in_group_measure(L * T, ctx.lambda.secondary_terminated() || v.secondary_terminated, ctx.hero_scale);

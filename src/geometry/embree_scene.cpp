@@ -177,8 +177,17 @@ void set_buffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, cons
     if (buffer) std::memcpy(buffer, data, element_size * count);
 }
 
-// Moves a surface record from an instance's space to render space.
+// Moves a surface record from an instance's space to render space. The point's rounding error
+// is carried along: it is bounded in render space by the image of the instance-space box of its
+// rounding scale, whose largest coordinate is |translation| + scale * (row sum of |linear part|).
 void transform_interaction(const Transform &render_from_instance, SurfaceInteraction *si) {
+    const float scale = rounding_scale(si->p, si->error_scale);
+    const Matrix4 &m = render_from_instance.matrix();
+    si->error_scale = 0;
+    for (int i = 0; i < 3; ++i)
+        si->error_scale = std::max(si->error_scale, std::abs(m.m[i][3]) + scale * (std::abs(m.m[i][0]) +
+                                                                                   std::abs(m.m[i][1]) +
+                                                                                   std::abs(m.m[i][2])));
     si->p = render_from_instance.apply_point(si->p);
     si->n = normalize(render_from_instance.apply_normal(si->n));
     si->dpdu = render_from_instance.apply_vector(si->dpdu);

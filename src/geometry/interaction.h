@@ -13,6 +13,10 @@ struct MediumInterface;
 
 struct SurfaceInteraction {
     Vec3f p;        // on the surface (not o + t d), as robust spawning requires
+    // The magnitude of the coordinates p was computed from, when larger than p's own (a
+    // triangle's vertices, an instance's placement), 0 otherwise: rays leave p by an offset that
+    // grows with it (rounding_scale, geometry/ray.h).
+    float error_scale = 0;
     Vec3f n;        // geometric normal, unit; flipped by ReverseOrientation / handedness
     Vec2f uv;
     Vec3f wo;       // towards the ray origin, unit
@@ -39,9 +43,10 @@ struct SurfaceInteraction {
     // The participating medium inside the material here, set with the BSDF (shade(), material.h).
     const Medium *interior = nullptr;
 
-    Ray spawn_ray(Vec3f d) const { return caustica::spawn_ray(p, n, d, time); }
-    Ray spawn_ray_to(Vec3f p_to, Vec3f n_to = {}) const {
-        return caustica::spawn_ray_to(p, n, p_to, n_to, time);
+    Ray spawn_ray(Vec3f d) const { return caustica::spawn_ray(p, n, error_scale, d, time); }
+    // Towards p_to on a surface with normal n_to and its error scale (n_to zero: not on a surface).
+    Ray spawn_ray_to(Vec3f p_to, Vec3f n_to = {}, float error_scale_to = 0) const {
+        return caustica::spawn_ray_to(p, n, error_scale, p_to, n_to, error_scale_to, time);
     }
     // Replaces the shading frame; keeps the shading normal on the geometric normal's side.
     void set_shading(Vec3f ns, Vec3f dpdus, Vec3f dpdvs) {

@@ -10,6 +10,7 @@ namespace caustica {
 
 struct ShapeSample {
     Vec3f p, n;      // sampled point and its (oriented) geometric normal
+    float error_scale = 0; // as SurfaceInteraction::error_scale
     Vec2f uv;
     float pdf = 0;   // area density from sample(u); solid-angle density from sample(ref, u)
 };

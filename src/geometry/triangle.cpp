@@ -27,6 +27,7 @@ ShapeSample Triangle::sample_at(const double b[3]) const {
     float bf[3] = {float(b[0]), float(b[1]), float(b[2])};
     ShapeSample ss;
     ss.p = mesh_->point(index_, bf);
+    ss.error_scale = mesh_->error_scale(index_);
     ss.n = mesh_->normal(index_, bf);
     ss.uv = mesh_->uv(index_, bf);
     return ss;

@@ -133,6 +133,11 @@ TriangleMesh::TriangleFrame TriangleMesh::compute_frame(int triangle) const {
     return frame;
 }
 
+float TriangleMesh::error_scale(int triangle) const {
+    auto v = vertices(triangle);
+    return max_component(max(abs(p_[v[0]]), max(abs(p_[v[1]]), abs(p_[v[2]]))));
+}
+
 void TriangleMesh::interaction(int triangle, const float b[3], SurfaceInteraction *si) const {
     auto v = vertices(triangle);
     Vec2f t[3];
@@ -140,6 +145,7 @@ void TriangleMesh::interaction(int triangle, const float b[3], SurfaceInteractio
     const TriangleFrame &frame = frames_[triangle];
 
     si->p = p_[v[0]] * b[0] + p_[v[1]] * b[1] + p_[v[2]] * b[2];
+    si->error_scale = error_scale(triangle);
     si->uv = t[0] * b[0] + t[1] * b[1] + t[2] * b[2];
     si->face_index = triangle;
     si->dpdu = frame.dpdu;

@@ -43,6 +43,9 @@ class TriangleMesh {
     Vec3f point(int triangle, const float b[3]) const;
     Vec3f normal(int triangle, const float b[3]) const;
     Vec2f uv(int triangle, const float b[3]) const;
+    // The largest coordinate magnitude of the triangle's vertices, which the rounding error of a
+    // point interpolated from them is proportional to (SurfaceInteraction::error_scale).
+    float error_scale(int triangle) const;
 
     // Fills the surface record at barycentrics b, the point interpolated from the vertices so
     // that it lies on the triangle (robust spawning depends on it). Leaves wo, t, material and

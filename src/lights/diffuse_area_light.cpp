@@ -54,6 +54,7 @@ std::optional<LightLiSample> DiffuseAreaLight::sample_li(const LightSampleContex
     s.pdf = ss->pdf;
     s.p_light = ss->p;
     s.n_light = ss->n;
+    s.error_scale_light = ss->error_scale;
     return s;
 }
 
@@ -83,8 +84,9 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Vec2f u1, Vec2f u2,
     w = Frame::from_z(ss->n).from_local(w);
     LightLeSample s;
     s.L = L(ss->p, ss->n, ss->uv, w, lambda);
-    s.ray = spawn_ray(ss->p, ss->n, w, 0); // the light path's time is set where it starts
+    s.ray = spawn_ray(ss->p, ss->n, ss->error_scale, w, 0); // the light path's time is set where it starts
     s.n = ss->n;
+    s.error_scale = ss->error_scale;
     s.uv = ss->uv;
     s.pdf_pos = ss->pdf;
     s.pdf_dir = pdf_dir;

@@ -36,6 +36,7 @@ struct LightLiSample {
     Vec3f wi;            // unit direction from the receiving point towards the light
     float pdf = 0;       // solid angle (1 for delta lights)
     Vec3f p_light, n_light; // point on the light and its normal (n zero for point lights)
+    float error_scale_light = 0; // p_light's, as SurfaceInteraction::error_scale
     bool is_infinite = false; // p_light is only a direction: occlusion ray is unbounded
 };
 
@@ -43,6 +44,7 @@ struct LightLeSample {
     SampledSpectrum L;
     Ray ray;
     Vec3f n;                   // normal at the ray origin (zero if none)
+    float error_scale = 0;     // the origin's, as SurfaceInteraction::error_scale
     Vec2f uv;                  // surface lights: the origin's uv, on which L may depend
     float pdf_pos = 0, pdf_dir = 0;
 };

@@ -62,7 +62,7 @@ SceneProbe probe_scene(const Scene &scene, int rays_per_axis) {
         if (!le || le->L.is_black()) continue;
         total += 1;
         Ray ray = le->ray;
-        if (length_squared(le->n) > 0) ray = spawn_ray(ray.o, le->n, ray.d, ray.time);
+        if (length_squared(le->n) > 0) ray = spawn_ray(ray.o, le->n, le->error_scale, ray.d, ray.time);
         behind_specular += first_hit(scene, ray) == FirstHit::Specular;
     }
     if (total > 0) probe.lights_behind_specular = float(behind_specular / total);

@@ -164,7 +164,7 @@ TEST(Curves, RaysLeavingACurveDoNotHitItAgain) {
     SurfaceInteraction si;
     ASSERT_TRUE(scene->intersect(towards_z(0.3f, 0.05f), &si));
     for (Vec3f from : {Vec3f{2, 1, -1}, Vec3f{-1.5f, 0.05f, 0.1f}, Vec3f{0.3f, -1, 1}}) {
-        const Ray to_curve = caustica::spawn_ray_to(from, {}, si.p, si.n, 0);
+        const Ray to_curve = caustica::spawn_ray_to(from, {}, 0, si.p, si.n, si.error_scale, 0);
         EXPECT_FALSE(scene->occluded(to_curve)) << from.x;
     }
 }
