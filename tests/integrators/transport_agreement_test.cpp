@@ -112,7 +112,7 @@ TEST_P(TransportAgreement, MatchesPathTracerReference) {
 // alone does not render those pixels (it is exercised in the other integrators' strategies).
 const AgreementCase kCases[] = {
     {"pool-air", "pt", 64},          {"pool-air", "bdpt", 64},         {"pool-air", "sppm", 256},
-    {"pool-air", "bpm", 128},         {"pool-air", "vcm", 64},
+    {"pool-air", "bpm", 512},         {"pool-air", "vcm", 64},
     {"pool-underwater", "pt", 64},   {"pool-underwater", "lt", 256},    {"pool-underwater", "bdpt", 64},
     {"pool-underwater", "sppm", 256}, {"pool-underwater", "bpm", 128},   {"pool-underwater", "vcm", 64},
     {"glass-block", "pt", 64},       {"glass-block", "bdpt", 32},      {"glass-block", "sppm", 512},
