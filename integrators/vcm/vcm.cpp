@@ -120,7 +120,7 @@ void add_photons(std::span<const LightVertex> path, const SampledWavelengths &la
 }
 
 // A ray leaving point towards p_to (with normal n_to, zero if none, and rounding scale
-// error_scale_to) and stopping short of it.
+// error_scale_to), as spawn_ray_to makes it.
 Ray spawn_ray_between(const ScatteringPoint &point, Vec3f p_to, Vec3f n_to, float error_scale_to) {
     return spawn_ray_to(point.p, point.ng, point.error_scale, p_to, n_to, error_scale_to, point.time);
 }

@@ -133,10 +133,10 @@ TEST(Robustness, SphereSurfacesAtLargeCoordinates) {
             ASSERT_TRUE(scene->intersect({origin, from_inside ? w : -w}, &si));
             SurfaceInteraction hit;
             self_hits += scene->intersect(si.spawn_ray(grazing_direction(si.n, 1, rng)), &hit);
-            // Inwards the ray must reach the far side. The spawn offset puts the origin at least
-            // 2^-16 (here > 1.5e-5 r) inside along the normal, and from depth delta even a
-            // tangent chord is sqrt(2 r delta) > 5e-3 r long; a hit closer than 5e-4 r is the
-            // surface just left.
+            // Inwards the ray must reach the far side. The spawn offset puts the origin 2^-18 of
+            // the coordinates (here about 1e-6 r or more) inside along the normal, and from depth delta
+            // even a tangent chord is sqrt(2 r delta) > 1.4e-3 r long; a hit closer than 5e-4 r
+            // is the surface just left.
             Ray inward = si.spawn_ray(grazing_direction(si.n, -1, rng));
             if (!scene->intersect(inward, &hit)) {
                 ++leaks;
