@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Renders the pbrt-v4 references of the scenes that tests compare with pbrt-v4: the
 # hard-transport scenes (scenes/hard; see tests/data/pbrt-v4/hard/README.md), the procedural
-# textures (scenes/textures), measured materials (scenes/materials), curves and hair (scenes/shapes), cameras, lights, heterogeneous media and motion blur (scenes/cameras,
+# textures (scenes/textures), measured materials (scenes/materials), curves, hair, displaced meshes and
+# bilinear patches (scenes/shapes), cameras, lights, heterogeneous media and motion blur (scenes/cameras,
 # scenes/lights, scenes/media, scenes/motion), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
 # not needed by any test: it needs a pbrt-v4 binary (PBRT, default ../shared/tools/pbrt-v4/pbrt)
 # and oiiotool, and takes about half an hour on 2 cores.
@@ -47,6 +48,7 @@ shapes/curves 4096
 shapes/hair 4096
 shapes/wide-fibres 1024
 shapes/displaced-plymesh 1024
+shapes/bilinear-patches 4096
 cameras/spherical-equirect 64
 cameras/spherical-equalarea 64
 cameras/realistic-dof 4096

@@ -87,6 +87,34 @@ inline void sample_uniform_triangle(Vec2f u, float b[3]) {
     b[2] = 1 - b0 - b1;
 }
 
+// x in [0, 1] with density proportional to (1 - x) a + x b (a, b >= 0, not both 0): the root of
+// the quadratic CDF (2 a x + (b - a) x^2) / (a + b) = u, in the form that stays accurate when
+// a and b are nearly equal.
+inline float sample_linear(float u, float a, float b) {
+    if (a + b == 0) return u;
+    const float denominator = a + std::sqrt((1 - u) * a * a + u * b * b);
+    if (denominator == 0) return 0;
+    return std::min(u * (a + b) / denominator, OneMinusEpsilon);
+}
+inline float linear_pdf(float x, float a, float b) {
+    if (x < 0 || x > 1) return 0;
+    return a + b == 0 ? 1 : 2 * ((1 - x) * a + x * b) / (a + b);
+}
+
+// (u, v) in [0, 1]^2 with density proportional to the bilinear interpolation of the corner
+// weights w = {w(0,0), w(1,0), w(0,1), w(1,1)}: v from its marginal, then u given v.
+inline Vec2f sample_bilinear(Vec2f u, const float w[4]) {
+    const float v = sample_linear(u.y, w[0] + w[1], w[2] + w[3]);
+    return {sample_linear(u.x, (1 - v) * w[0] + v * w[2], (1 - v) * w[1] + v * w[3]), v};
+}
+inline float bilinear_pdf(Vec2f p, const float w[4]) {
+    if (p.x < 0 || p.x > 1 || p.y < 0 || p.y > 1) return 0;
+    const float sum = w[0] + w[1] + w[2] + w[3];
+    if (sum == 0) return 1;
+    return 4 * ((1 - p.x) * (1 - p.y) * w[0] + p.x * (1 - p.y) * w[1] + (1 - p.x) * p.y * w[2] + p.x * p.y * w[3]) /
+           sum;
+}
+
 // Samples {0..n-1} proportionally to weights, reusing u for continuous sampling afterwards.
 class DiscreteDistribution {
   public:

@@ -17,6 +17,7 @@ struct EmbreeCallbackData {
     const TriangleMesh *mesh;
     const AnalyticShape *analytic;
     const CurveSet *curves;
+    const BilinearPatchMesh *patches;
     const AlphaMask *alpha;
 };
 
@@ -31,6 +32,10 @@ namespace {
 
 constexpr unsigned CurveTessellationRate = 16;
 
+// A hit of user geometry: the ray parameter and the (u, v) reported to Embree (a patch's
+// parameters; 0 for analytic shapes, which find their surface record from t).
+using UserHit = BilinearPatchMesh::Hit;
+
 // Embree reports errors through this callback; build steps then check rtcGetDeviceError.
 void report_embree_error(void *, RTCError code, const char *message) {
     if (code != RTC_ERROR_NONE) warning(std::string("Embree: ") + (message ? message : "error"));
@@ -38,15 +43,22 @@ void report_embree_error(void *, RTCError code, const char *message) {
 
 const EmbreeCallbackData &data_of(void *user) { return *static_cast<const EmbreeCallbackData *>(user); }
 
-// User geometry callbacks for analytic shapes: our double-precision intersection code.
+void write_bounds(const Bounds3f &b, RTCBounds *out) {
+    out->lower_x = b.lo.x;
+    out->lower_y = b.lo.y;
+    out->lower_z = b.lo.z;
+    out->upper_x = b.hi.x;
+    out->upper_y = b.hi.y;
+    out->upper_z = b.hi.z;
+}
+
+// User geometry callbacks for analytic shapes and bilinear patches: our double-precision
+// intersection code.
 void analytic_bounds(const RTCBoundsFunctionArguments *args) {
-    Bounds3f b = data_of(args->geometryUserPtr).analytic->bounds();
-    args->bounds_o->lower_x = b.lo.x;
-    args->bounds_o->lower_y = b.lo.y;
-    args->bounds_o->lower_z = b.lo.z;
-    args->bounds_o->upper_x = b.hi.x;
-    args->bounds_o->upper_y = b.hi.y;
-    args->bounds_o->upper_z = b.hi.z;
+    write_bounds(data_of(args->geometryUserPtr).analytic->bounds(), args->bounds_o);
+}
+void patch_bounds(const RTCBoundsFunctionArguments *args) {
+    write_bounds(data_of(args->geometryUserPtr).patches->bounds(int(args->primID)), args->bounds_o);
 }
 
 Vec3f ray_origin(RTCRayN *rays, unsigned n, unsigned i) {
@@ -78,24 +90,42 @@ std::optional<float> analytic_hit(const EmbreeCallbackData &data, Vec3f o, Vec3f
     }
 }
 
-void analytic_intersect(const RTCIntersectFunctionNArguments *args) {
-    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
+// The first hit of a bilinear patch in [t_near, t_far) that its alpha mask does not let pass.
+std::optional<BilinearPatchMesh::Hit> patch_hit(const EmbreeCallbackData &data, int patch, Vec3f o, Vec3f d,
+                                                float t_near, float t_far) {
+    BilinearPatchMesh::Hit hits[2];
+    const int count = data.patches->hits(patch, o, d, t_far, hits);
+    for (int n = 0; n < count; ++n) {
+        if (hits[n].t < t_near) continue;
+        if (data.alpha) {
+            SurfaceInteraction si;
+            data.patches->interaction(patch, hits[n].uv, &si);
+            if (passes(*data.alpha, o, d, hits[n].t, si)) continue;
+        }
+        return hits[n];
+    }
+    return std::nullopt;
+}
+
+// A user geometry's first hit along ray i of the packet, found by first_hit(o, d, t_near, t_far)
+// as an optional UserHit, reported to Embree as a hit of the primitive.
+template <typename FirstHit>
+void intersect_user_geometry(const RTCIntersectFunctionNArguments *args, FirstHit first_hit) {
     RTCRayN *rays = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN *hits = RTCRayHitN_HitN(args->rayhit, args->N);
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
         // The ray arrives in the space the geometry lives in (an instance's, if instanced).
-        std::optional<float> t = analytic_hit(data, ray_origin(rays, args->N, i),
-                                              ray_direction(rays, args->N, i),
-                                              RTCRayN_tnear(rays, args->N, i),
-                                              RTCRayN_tfar(rays, args->N, i));
-        if (!t) continue;
-        RTCRayN_tfar(rays, args->N, i) = *t;
+        const std::optional<UserHit> hit =
+            first_hit(ray_origin(rays, args->N, i), ray_direction(rays, args->N, i), RTCRayN_tnear(rays, args->N, i),
+                      RTCRayN_tfar(rays, args->N, i));
+        if (!hit) continue;
+        RTCRayN_tfar(rays, args->N, i) = hit->t;
         RTCHitN_Ng_x(hits, args->N, i) = 0;
         RTCHitN_Ng_y(hits, args->N, i) = 0;
         RTCHitN_Ng_z(hits, args->N, i) = 1;
-        RTCHitN_u(hits, args->N, i) = 0;
-        RTCHitN_v(hits, args->N, i) = 0;
+        RTCHitN_u(hits, args->N, i) = hit->uv.x;
+        RTCHitN_v(hits, args->N, i) = hit->uv.y;
         RTCHitN_primID(hits, args->N, i) = args->primID;
         RTCHitN_geomID(hits, args->N, i) = args->geomID;
         for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
@@ -103,14 +133,45 @@ void analytic_intersect(const RTCIntersectFunctionNArguments *args) {
     }
 }
 
-void analytic_occluded(const RTCOccludedFunctionNArguments *args) {
-    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
+// Marks ray i of the packet occluded where any_hit(o, d, t_near, t_far) finds a hit.
+template <typename AnyHit>
+void occlude_user_geometry(const RTCOccludedFunctionNArguments *args, AnyHit any_hit) {
     for (unsigned i = 0; i < args->N; ++i) {
         if (!args->valid[i]) continue;
-        if (analytic_hit(data, ray_origin(args->ray, args->N, i), ray_direction(args->ray, args->N, i),
-                         RTCRayN_tnear(args->ray, args->N, i), RTCRayN_tfar(args->ray, args->N, i)))
+        if (any_hit(ray_origin(args->ray, args->N, i), ray_direction(args->ray, args->N, i),
+                    RTCRayN_tnear(args->ray, args->N, i), RTCRayN_tfar(args->ray, args->N, i)))
             RTCRayN_tfar(args->ray, args->N, i) = -Infinity; // Embree's "occluded" mark
     }
+}
+
+void analytic_intersect(const RTCIntersectFunctionNArguments *args) {
+    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
+    intersect_user_geometry(args, [&](Vec3f o, Vec3f d, float t_near, float t_far) -> std::optional<UserHit> {
+        const std::optional<float> t = analytic_hit(data, o, d, t_near, t_far);
+        if (!t) return std::nullopt;
+        return UserHit{*t, {0, 0}};
+    });
+}
+
+void analytic_occluded(const RTCOccludedFunctionNArguments *args) {
+    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
+    occlude_user_geometry(args, [&](Vec3f o, Vec3f d, float t_near, float t_far) {
+        return analytic_hit(data, o, d, t_near, t_far).has_value();
+    });
+}
+
+void patch_intersect(const RTCIntersectFunctionNArguments *args) {
+    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
+    intersect_user_geometry(args, [&](Vec3f o, Vec3f d, float t_near, float t_far) {
+        return patch_hit(data, int(args->primID), o, d, t_near, t_far);
+    });
+}
+
+void patch_occluded(const RTCOccludedFunctionNArguments *args) {
+    const EmbreeCallbackData &data = data_of(args->geometryUserPtr);
+    occlude_user_geometry(args, [&](Vec3f o, Vec3f d, float t_near, float t_far) {
+        return patch_hit(data, int(args->primID), o, d, t_near, t_far).has_value();
+    });
 }
 
 // Embree's intersection and occlusion filter for a cut-out mesh: drops each candidate hit that
@@ -241,11 +302,11 @@ void GeometryScene::check_device(const char *what) const {
 
 void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group,
                            const AlphaMask *alpha) {
-    // Only analytic shapes, curves and cut-outs have callbacks.
+    // Only analytic shapes, patches, curves and cut-outs have callbacks.
     void *callback_data = nullptr;
-    if (group.analytic || group.curves || alpha) {
-        callback_data_.push_back(std::make_unique<EmbreeCallbackData>(
-            EmbreeCallbackData{group.mesh.get(), group.analytic.get(), group.curves.get(), alpha}));
+    if (group.analytic || group.patches || group.curves || alpha) {
+        callback_data_.push_back(std::make_unique<EmbreeCallbackData>(EmbreeCallbackData{
+            group.mesh.get(), group.analytic.get(), group.curves.get(), group.patches.get(), alpha}));
         callback_data = callback_data_.back().get();
     }
     RTCGeometry geometry;
@@ -278,6 +339,13 @@ void GeometryScene::attach(RTCScene scene, unsigned geometry_id, const ShapeGrou
         rtcSetGeometryUserData(geometry, callback_data);
         rtcSetGeometryIntersectFilterFunction(geometry, curve_filter);
         rtcSetGeometryOccludedFilterFunction(geometry, curve_filter);
+    } else if (group.patches) {
+        geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(geometry, unsigned(group.patches->patch_count()));
+        rtcSetGeometryUserData(geometry, callback_data);
+        rtcSetGeometryBoundsFunction(geometry, patch_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(geometry, patch_intersect);
+        rtcSetGeometryOccludedFunction(geometry, patch_occluded);
     } else {
         geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(geometry, 1);
@@ -433,6 +501,8 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
         group.mesh->interaction(int(index), b, si);
     } else if (group.curves) {
         group.curves->interaction(int(index), rayhit.hit.u, local, t, si);
+    } else if (group.patches) {
+        group.patches->interaction(int(index), {rayhit.hit.u, rayhit.hit.v}, si);
     } else {
         *si = group.analytic->interaction(local, t);
     }

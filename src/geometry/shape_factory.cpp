@@ -129,9 +129,15 @@ std::shared_ptr<ShapeGroup> create_bilinear_mesh(const Transform &render_from_ob
     }
     discard_if_mismatched(n, p.size(), "bilinearmesh", "N", params);
     discard_if_mismatched(uv, p.size(), "bilinearmesh", "uv", params);
-    MeshData data = triangulate_bilinear_patches(indices, p, n, uv, params.location("indices"));
-    return mesh_group("bilinearmesh", std::move(data), render_from_object, reverse_orientation,
-                      params.location("indices"), "bilinearmesh");
+    validate_bilinear_patches(indices, p, n, uv, params.location("indices"));
+    if (bilinear_patches_are_affine(indices, p, n, uv))
+        return mesh_group("bilinearmesh", triangulate_bilinear_patches(indices, p, n, uv), render_from_object,
+                          reverse_orientation, params.location("indices"), "bilinearmesh");
+    auto group = std::make_shared<ShapeGroup>();
+    group->type = "bilinearmesh";
+    group->patches = std::make_shared<BilinearPatchMesh>(render_from_object, reverse_orientation, std::move(indices),
+                                                         std::move(p), std::move(n), std::move(uv));
+    return group;
 }
 
 std::shared_ptr<ShapeGroup> create_sphere(const Transform &render_from_object,

@@ -12,11 +12,16 @@ std::vector<std::shared_ptr<Shape>> ShapeGroup::shapes() const {
         for (int i = 0; i < mesh->triangle_count(); ++i)
             result.push_back(std::make_shared<Triangle>(mesh, i));
     }
+    if (patches) {
+        result.reserve(patches->patch_count());
+        for (int i = 0; i < patches->patch_count(); ++i)
+            result.push_back(std::make_shared<BilinearPatch>(patches, i));
+    }
     return result;
 }
 
 size_t ShapeGroup::primitive_count() const {
-    return (analytic ? 1 : 0) + triangle_count();
+    return (analytic ? 1 : 0) + triangle_count() + (patches ? size_t(patches->patch_count()) : 0);
 }
 
 Bounds3f ShapeGroup::bounds() const {
@@ -24,6 +29,7 @@ Bounds3f ShapeGroup::bounds() const {
     if (analytic) b.expand(analytic->bounds());
     if (mesh) b.expand(mesh->bounds());
     if (curves) b.expand(curves->bounds());
+    if (patches) b.expand(patches->bounds());
     return b;
 }
 

@@ -94,8 +94,7 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Vec2f u1, Vec2f u2,
 }
 
 void DiffuseAreaLight::pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const {
-    // Shapes sample positions uniformly by area.
-    *pdf_pos = 1 / area_;
+    *pdf_pos = shape_->pdf_area(ray.o);
     float cos_t = dot(n, normalize(ray.d));
     *pdf_dir = two_sided_ ? cosine_hemisphere_pdf(std::abs(cos_t)) / 2
                           : std::max(0.f, cosine_hemisphere_pdf(cos_t));

@@ -128,12 +128,19 @@ TEST(CreateShape, BilinearMeshAsTriangles) {
                                           numbers("integer", "indices", {0, 1, 2})}),
                               loc),
                  InputError);
-    // A curved patch still becomes two triangles (with a warning).
+    // A curved patch is an exact bilinear patch (bilinear_patch_test.cpp), not triangles; so is
+    // a planar one whose uv are not affine over it.
     auto curved = create_shape(
         "bilinearmesh", {}, false,
         dictionary({numbers("point3", "P", {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1})}), loc);
-    ASSERT_TRUE(curved);
-    EXPECT_EQ(curved->triangle_count(), 2u);
+    ASSERT_TRUE(curved && curved->patches);
+    EXPECT_EQ(curved->triangle_count(), 0u);
+    EXPECT_EQ(curved->primitive_count(), 1u);
+    auto warped_uv = create_shape("bilinearmesh", {}, false,
+                                  dictionary({numbers("point3", "P", {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}),
+                                              numbers("point2", "uv", {0, 0, 1, 0, 0, 1, 2, 2})}),
+                                  loc);
+    ASSERT_TRUE(warped_uv && warped_uv->patches);
 }
 
 void expect_quad_ply(const ShapeGroup &group) {
