@@ -79,7 +79,10 @@ TEST_P(HardTransport, MatchesPbrtV4) {
 //   rim block (3% low at the lens's edge) was a leak, now mended: entries within 15
 //   micrometres of the thin rim were offset past the other face (geometry/ray.h);
 // - lt on dense-ball: it reaches the lens only from vertices on the ball's boundary, whose
-//   splats are strongly correlated (k about 4); its standard error is 2.3% at 4096 iterations;
+//   splats are strongly correlated (k about 4); eight renders of 8192 iterations (seeds 1-8)
+//   spread by 3.7% of the image mean, so a standard error of 0.3% would take about 100000
+//   iterations (twenty minutes); their mean is 1.1% below pbrt-v4's, within its standard error
+//   of 1.3%;
 //   bpm there: merging alone needs 8192 iterations (two minutes of the suite) for a standard
 //   error of 0.3% (it then agrees within 0.4%); vcm merges in the same way and is in the suite;
 // - pt, lt and sppm on coated-low-roughness, whose near-specular coat (alpha 0.01) mirrors the
