@@ -24,6 +24,10 @@ struct PatchCorners {
     Vec3d dpdv(double u) const { return lerp(u, p01, p11) - lerp(u, p00, p10); }
 };
 
+PatchCorners corners_in_double(const std::array<Vec3f, 4> &c) {
+    return {Vec3d(c[0]), Vec3d(c[1]), Vec3d(c[2]), Vec3d(c[3])};
+}
+
 // The real roots of a u^2 + b u + c in increasing order; returns their number. A quadratic term
 // that is negligible against the others (a patch that is nearly a parallelogram) leaves the
 // linear equation.
@@ -65,10 +69,6 @@ BilinearPatchMesh::BilinearPatchMesh(const Transform &render_from_object, bool r
 std::array<Vec3f, 4> BilinearPatchMesh::corners(int patch) const {
     const int *v = &indices_[4 * size_t(patch)];
     return {p_[v[0]], p_[v[1]], p_[v[2]], p_[v[3]]};
-}
-
-static PatchCorners corners_in_double(const std::array<Vec3f, 4> &c) {
-    return {Vec3d(c[0]), Vec3d(c[1]), Vec3d(c[2]), Vec3d(c[3])};
 }
 
 Bounds3f BilinearPatchMesh::bounds(int patch) const {
@@ -201,18 +201,7 @@ void BilinearPatchMesh::interaction(int patch, Vec2f uv, SurfaceInteraction *si)
     si->shading.dpdv = si->dpdv;
     if (n_.empty()) return;
     const Vec3f n_interpolated = lerp(uv.x, lerp(uv.y, n_[v[0]], n_[v[2]]), lerp(uv.y, n_[v[1]], n_[v[3]]));
-    if (!(length_squared(n_interpolated) > 0)) return;
-    // Shading frame as for triangle meshes: the interpolated normal, the tangent along dp/du
-    // made orthogonal to it.
-    const Vec3f ns = normalize(n_interpolated);
-    Vec3f ss = si->dpdu;
-    Vec3f ts = cross(ns, ss);
-    if (length_squared(ts) > 0) {
-        ss = cross(ts, ns);
-    } else {
-        coordinate_system(ns, &ss, &ts);
-    }
-    si->set_shading(ns, ss, ts);
+    if (length_squared(n_interpolated) > 0) si->set_shading_normal(normalize(n_interpolated));
 }
 
 BilinearPatch::BilinearPatch(std::shared_ptr<const BilinearPatchMesh> mesh, int index)

@@ -54,6 +54,18 @@ struct SurfaceInteraction {
         shading.dpdu = dpdus;
         shading.dpdv = dpdvs;
     }
+    // The shading frame of an interpolated unit normal ns (meshes, patches): ns, with the tangent
+    // along dp/du made orthogonal to it (any tangent where dp/du lies along ns).
+    void set_shading_normal(Vec3f ns) {
+        Vec3f ss = dpdu;
+        Vec3f ts = cross(ns, ss);
+        if (length_squared(ts) > 0) {
+            ss = cross(ts, ns);
+        } else {
+            coordinate_system(ns, &ss, &ts);
+        }
+        set_shading(ns, ss, ts);
+    }
 };
 
 } // namespace caustica

@@ -157,17 +157,8 @@ void TriangleMesh::interaction(int triangle, const float b[3], SurfaceInteractio
     si->shading.dpdv = si->dpdv;
     if (n_.empty()) return;
 
-    // Shading frame: interpolated normal (the geometric one where it vanishes), tangent along
-    // dpdu made orthogonal to it.
-    Vec3f ns = length_squared(n_interpolated) > 0 ? normalize(n_interpolated) : si->n;
-    Vec3f ss = si->dpdu;
-    Vec3f ts = cross(ns, ss);
-    if (length_squared(ts) > 0) {
-        ss = cross(ts, ns);
-    } else {
-        coordinate_system(ns, &ss, &ts);
-    }
-    si->set_shading(ns, ss, ts);
+    // The interpolated normal, or the geometric one where it vanishes.
+    si->set_shading_normal(length_squared(n_interpolated) > 0 ? normalize(n_interpolated) : si->n);
 }
 
 } // namespace caustica
