@@ -90,4 +90,12 @@ MeshData triangulate_bilinear_patches(const std::vector<int> &indices, const std
     return mesh;
 }
 
+void split_quads(MeshData *mesh) {
+    for (size_t i = 0; i < mesh->quads.size(); i += 4) {
+        const int *q = &mesh->quads[i];
+        mesh->indices.insert(mesh->indices.end(), {q[0], q[1], q[2], q[1], q[3], q[2]});
+    }
+    mesh->quads.clear();
+}
+
 } // namespace caustica

@@ -29,4 +29,8 @@ bool bilinear_patches_are_affine(const std::vector<int> &indices, const std::vec
 MeshData triangulate_bilinear_patches(const std::vector<int> &indices, const std::vector<Vec3f> &p,
                                       const std::vector<Vec3f> &n, const std::vector<Vec2f> &uv);
 
+// A mesh file's quads (MeshData::quads) split into the same two triangles each, appended to its
+// triangles, which is exact when bilinear_patches_are_affine(mesh.quads, ...).
+void split_quads(MeshData *mesh);
+
 } // namespace caustica

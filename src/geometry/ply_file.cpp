@@ -66,22 +66,25 @@ class PlyReader {
         format_ = header.format;
         pos_ = header.body;
         MeshData mesh;
-        std::vector<int64_t> corners; // face corners, validated once every vertex is known
+        // Face corners of triangles and quads, validated once every vertex is known.
+        std::vector<int64_t> triangles, quads;
         size_t skipped_faces = 0;
         for (const Element &e : header.elements) {
             if (e.name == "vertex") read_vertices(e, &mesh);
-            else if (e.name == "face") read_faces(e, &corners, &skipped_faces);
+            else if (e.name == "face") read_faces(e, &triangles, &quads, &skipped_faces);
             else skip_element(e);
         }
-        for (int64_t c : corners)
-            if (c < 0 || c >= int64_t(mesh.p.size()))
-                fail("a face refers to vertex " + std::to_string(c) + ", but there are " +
-                     std::to_string(mesh.p.size()) + " vertices");
-        mesh.indices.assign(corners.begin(), corners.end());
+        for (const std::vector<int64_t> *corners : {&triangles, &quads})
+            for (int64_t c : *corners)
+                if (c < 0 || c >= int64_t(mesh.p.size()))
+                    fail("a face refers to vertex " + std::to_string(c) + ", but there are " +
+                         std::to_string(mesh.p.size()) + " vertices");
+        mesh.indices.assign(triangles.begin(), triangles.end());
+        mesh.quads.assign(quads.begin(), quads.end());
         if (skipped_faces > 0)
             warning(loc_, "plymesh \"" + path_ + "\": ignored " + std::to_string(skipped_faces) +
                               " faces that are neither triangles nor quads, as pbrt-v4 does");
-        if (mesh.indices.empty()) fail("holds no triangles");
+        if (mesh.indices.empty() && mesh.quads.empty()) fail("holds no triangles or quads");
         return mesh;
     }
 
@@ -292,7 +295,8 @@ class PlyReader {
         }
     }
 
-    void read_faces(const Element &e, std::vector<int64_t> *corners, size_t *skipped) {
+    void read_faces(const Element &e, std::vector<int64_t> *triangles, std::vector<int64_t> *quads,
+                    size_t *skipped) {
         bool found = false;
         for (uint64_t i = 0; i < e.count; ++i) {
             for (const Property &p : e.properties) {
@@ -310,11 +314,10 @@ class PlyReader {
                     if (k < 4) v[k] = int64_t(index);
                 }
                 if (n == 3) {
-                    corners->insert(corners->end(), {v[0], v[1], v[2]});
+                    triangles->insert(triangles->end(), {v[0], v[1], v[2]});
                 } else if (n == 4) {
-                    // pbrt-v4 makes the quad the bilinear patch (v0, v1, v3, v2); its two
-                    // triangles split it along v1-v3.
-                    corners->insert(corners->end(), {v[0], v[1], v[3], v[1], v[2], v[3]});
+                    // pbrt-v4 makes the quad the bilinear patch (v0, v1, v3, v2).
+                    quads->insert(quads->end(), {v[0], v[1], v[3], v[2]});
                 } else {
                     ++*skipped;
                 }

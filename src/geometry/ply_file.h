@@ -20,8 +20,8 @@ bool is_ply(std::string_view bytes);
 // Reads the whole PLY file held in `bytes` (ascii, binary_little_endian or binary_big_endian).
 // From the "vertex" element it takes x, y, z; nx, ny, nz when all three are there; and u, v
 // (or s, t, texture_u, texture_v, texture_s, texture_t) when both are there. From the "face"
-// element it takes the "vertex_indices" (or "vertex_index") lists: triangles as they are, and
-// quads split along the diagonal that pbrt-v4's bilinear patch (v0, v1, v3, v2) would use. Other
+// element it takes the "vertex_indices" (or "vertex_index") lists: triangles into `indices`, and
+// quads into `quads` as pbrt-v4's bilinear patches (v0, v1, v3, v2). Other
 // elements and properties (colours, face_indices, edges) are read past. Faces of other sizes
 // are skipped with one warning, as pbrt-v4 does. Throws InputError at loc, naming `path`, for a
 // malformed header, a body shorter than the header declares, or an index outside the vertices.

@@ -90,6 +90,26 @@ std::shared_ptr<ShapeGroup> create_ply_mesh(const Transform &render_from_object,
     std::string path = params.file_path("filename", filename);
     const float edge_length = params.get_one_float("edgelength", 1);
     MeshData data = read_mesh_file(path, params.location("filename"));
+    // Quads are pbrt-v4's bilinear patches: the two triangles they are when affine, and exact
+    // patches when curved. Displacement refines triangles, and a shape holds either triangles or
+    // patches, so files that also hold triangles, or are displaced, have their curved quads
+    // split into two triangles each, with a warning.
+    if (!data.quads.empty() && !bilinear_patches_are_affine(data.quads, data.p, data.n, data.uv)) {
+        if (displacement || !data.indices.empty()) {
+            warning(params.location("filename"),
+                    "plymesh \"" + filename + "\": its curved quads are approximated by two triangles each (" +
+                        (displacement ? "displacement refines triangles" : "the file also holds triangles") + ")");
+        } else {
+            validate_bilinear_patches(data.quads, data.p, data.n, data.uv, params.location("filename"));
+            auto group = std::make_shared<ShapeGroup>();
+            group->type = "plymesh";
+            group->patches = std::make_shared<BilinearPatchMesh>(render_from_object, reverse_orientation,
+                                                                 std::move(data.quads), std::move(data.p),
+                                                                 std::move(data.n), std::move(data.uv));
+            return group;
+        }
+    }
+    split_quads(&data);
     if (displacement)
         data = displace_mesh(std::move(data), *displacement, edge_length, render_from_object,
                              params.location("displacement"), params.location("edgelength"));

@@ -104,9 +104,10 @@ TEST(PlyFile, NormalsUvQuadsAndOtherPropertiesAsPbrtReadsThem) {
     ASSERT_EQ(m.uv.size(), 4u);
     EXPECT_EQ(m.uv[2].x, 1);
     EXPECT_EQ(m.uv[3].y, 1);
-    // The quad (v0, v1, v2, v3) is pbrt-v4's bilinear patch (v0, v1, v3, v2): split along v1-v3.
-    // The pentagon is skipped, with a warning.
-    EXPECT_EQ(m.indices, (std::vector<int>{0, 1, 3, 1, 2, 3}));
+    // The quad (v0, v1, v2, v3) is pbrt-v4's bilinear patch (v0, v1, v3, v2). The pentagon is
+    // skipped, with a warning.
+    EXPECT_TRUE(m.indices.empty());
+    EXPECT_EQ(m.quads, (std::vector<int>{0, 1, 3, 2}));
 }
 
 TEST(PlyFile, CountsBeyondTheFileAreErrors) {

@@ -179,6 +179,22 @@ TEST(CreateShape, GzippedPlyMesh) {
     expect_quad_ply(*group);
 }
 
+// A curved quad of a PLY file is pbrt-v4's bilinear patch (v0, v1, v3, v2), here z = u v, and
+// is rendered as one: a ray up through (0.3, 0.6) meets it at z = 0.18 (split into two triangles
+// along v1-v3, at z = 0).
+TEST(CreateShape, PlyMeshWithACurvedQuad) {
+    auto params = dictionary({strings("string", "filename", {"saddle-quad.ply"})}, data_dir);
+    auto group = create_shape("plymesh", {}, false, params, loc);
+    ASSERT_TRUE(group && group->patches);
+    EXPECT_EQ(group->primitive_count(), 1u);
+    auto scene = test::scene_of({group});
+    SurfaceInteraction si;
+    ASSERT_TRUE(scene->intersect({{0.3f, 0.6f, -1}, {0, 0, 1}}, &si));
+    EXPECT_NEAR(si.p.z, 0.18f, 1e-6);
+    EXPECT_NEAR(si.uv.x, 0.3f, 1e-6);
+    EXPECT_NEAR(si.uv.y, 0.6f, 1e-6);
+}
+
 // The binary PLY of pbrt-v4's scene collection that made Assimp abort: its body starts with a
 // line-end byte.
 TEST(CreateShape, PlyMeshWhoseBodyStartsWithALineEnd) {
