@@ -115,6 +115,7 @@ TriangleMesh::TriangleFrame TriangleMesh::compute_frame(int triangle) const {
     triangle_uvs(triangle, t);
     TriangleFrame frame;
     frame.n_winding = normalize(cross(p0 - p2, p1 - p2));
+    frame.error_scale = max_component(max(abs(p0), max(abs(p1), abs(p2))));
 
     // Partial derivatives from the linear map between uv and position over the triangle:
     // dp02 = duv02.u dpdu + duv02.v dpdv, dp12 = duv12.u dpdu + duv12.v dpdv.
@@ -131,11 +132,6 @@ TriangleMesh::TriangleFrame TriangleMesh::compute_frame(int triangle) const {
         !is_finite(frame.dpdu) || !is_finite(frame.dpdv))
         coordinate_system(-frame.n_winding, &frame.dpdu, &frame.dpdv); // pbrt-v4's axis choice
     return frame;
-}
-
-float TriangleMesh::error_scale(int triangle) const {
-    auto v = vertices(triangle);
-    return max_component(max(abs(p_[v[0]]), max(abs(p_[v[1]]), abs(p_[v[2]]))));
 }
 
 void TriangleMesh::interaction(int triangle, const float b[3], SurfaceInteraction *si) const {

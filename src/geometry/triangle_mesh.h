@@ -45,7 +45,7 @@ class TriangleMesh {
     Vec2f uv(int triangle, const float b[3]) const;
     // The largest coordinate magnitude of the triangle's vertices, which the rounding error of a
     // point interpolated from them is proportional to (SurfaceInteraction::error_scale).
-    float error_scale(int triangle) const;
+    float error_scale(int triangle) const { return frames_[triangle].error_scale; }
 
     // Fills the surface record at barycentrics b, the point interpolated from the vertices so
     // that it lies on the triangle (robust spawning depends on it). Leaves wo, t, material and
@@ -65,6 +65,7 @@ class TriangleMesh {
     // derivatives. This halves the cost of a hit on small scenes, where traversal is cheap.
     struct TriangleFrame {
         Vec3f n_winding, dpdu, dpdv;
+        float error_scale;
     };
     TriangleFrame compute_frame(int triangle) const;
 
