@@ -43,17 +43,21 @@ WalkEvent SubpathWalk::advance() {
     while (true) {
         ++rays_;
         const bool hit = scene_.intersect(ray_, &si_);
-        const float speed = length(ray_.d);
-        const PathSegment segment = traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed, Infinity, ray_.time},
-                                                     hit ? si_.t * speed : Infinity, lambda(), sampler_, spectral_mis_);
-        if (mode_ == TransportMode::Radiance) emitted_ += beta * segment.emitted;
-        beta *= segment.weight;
-        if (beta.is_black()) return WalkEvent::Ended;
-        if (segment.scattered) {
-            differential_.reset();
-            point_ = ScatteringPoint::in_medium_along(ray_, segment.t, medium_);
-            return WalkEvent::Vertex;
+        // Outside media and absorbing interiors a segment changes nothing.
+        if (medium_ || absorbing_interior_) {
+            const float speed = length(ray_.d);
+            const PathSegment segment =
+                traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed, Infinity, ray_.time},
+                                 hit ? si_.t * speed : Infinity, lambda(), sampler_, spectral_mis_);
+            if (mode_ == TransportMode::Radiance) emitted_ += beta * segment.emitted;
+            beta *= segment.weight;
+            if (segment.scattered && !beta.is_black()) {
+                differential_.reset();
+                point_ = ScatteringPoint::in_medium_along(ray_, segment.t, medium_);
+                return WalkEvent::Vertex;
+            }
         }
+        if (beta.is_black()) return WalkEvent::Ended;
         if (!hit) return WalkEvent::Escaped;
         // Scenes without textures have neither a footprint nor differentials: nothing reads them.
         if (si_.material && (differential_ || scene_.camera_footprint))

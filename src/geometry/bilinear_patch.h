@@ -83,6 +83,7 @@ class BilinearPatch : public Shape {
     using Shape::sample;
     float pdf(Vec3f ref, Vec3f wi) const override;
     float pdf_area(Vec3f p) const override;
+    bool samples_uniformly_by_area() const override { return false; }
     std::optional<Hit> intersect(Vec3f o, Vec3f d, float t_max) const override;
 
   private:

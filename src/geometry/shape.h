@@ -30,6 +30,8 @@ class Shape {
     virtual float pdf(Vec3f ref, Vec3f wi) const;
     // Area density of sample(u) at the point p of the shape. Default: uniform by area.
     virtual float pdf_area(Vec3f) const { return 1 / area(); }
+    // Whether sample(u) is uniform by area, so that pdf_area is 1 / area() everywhere.
+    virtual bool samples_uniformly_by_area() const { return true; }
     // Intersection of a ray with this shape alone (used by pdf and light tracing).
     struct Hit { float t; Vec3f p, n; Vec2f uv; };
     virtual std::optional<Hit> intersect(Vec3f o, Vec3f d, float t_max) const = 0;

@@ -11,6 +11,7 @@ DiffuseAreaLight::DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumP
       alpha_(std::move(alpha)),
       image_(std::move(image)),
       area_(shape_->area()),
+      uniform_by_area_(shape_->samples_uniformly_by_area()),
       radiance_(std::move(radiance)),
       scale_(scale),
       two_sided_(two_sided) {}
@@ -94,7 +95,7 @@ std::optional<LightLeSample> DiffuseAreaLight::sample_le(Vec2f u1, Vec2f u2,
 }
 
 void DiffuseAreaLight::pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const {
-    *pdf_pos = shape_->pdf_area(ray.o);
+    *pdf_pos = uniform_by_area_ ? 1 / area_ : shape_->pdf_area(ray.o);
     float cos_t = dot(n, normalize(ray.d));
     *pdf_dir = two_sided_ ? cosine_hemisphere_pdf(std::abs(cos_t)) / 2
                           : std::max(0.f, cosine_hemisphere_pdf(cos_t));

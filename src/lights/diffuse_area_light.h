@@ -48,6 +48,7 @@ class DiffuseAreaLight final : public Light {
     std::shared_ptr<const AlphaMask> alpha_;
     std::shared_ptr<const EmissionImage> image_;
     float area_;
+    bool uniform_by_area_; // the shape's samples are uniform by area (pdf_le needs no query)
     SpectrumPtr radiance_;
     float scale_;
     bool two_sided_;
