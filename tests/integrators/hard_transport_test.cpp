@@ -77,7 +77,7 @@ TEST_P(HardTransport, MatchesPbrtV4) {
 //   from the skin happens to pass through the lens onto the lamp, and its image mean stays about
 //   1.3% below pbrt-v4's at 1024 samples (two seeds; the skin blocks' |z| up to 4), and 0.5%
 //   below at 4096 (four seeds, standard error 0.24%): a deficit that shrinks as the samples
-//   grow, as a heavy tail's does, at a cost (eight minutes a render) the suite cannot pay. Its former
+//   grow, as a heavy tail's does, at a cost (two minutes a render) the suite cannot pay. Its former
 //   rim block (3% low at the lens's edge) was a leak, now mended: entries within 15
 //   micrometres of the thin rim were offset past the other face (geometry/ray.h);
 // - lt on dense-ball: it reaches the lens only from vertices on the ball's boundary, whose
