@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace caustica {
 
@@ -98,7 +99,7 @@ int BilinearPatchMesh::hits(int patch, Vec3f o_f, Vec3f d_f, float t_max, Hit ou
     int count = 0;
     for (int i = 0; i < root_count; ++i) {
         const double u = roots[i];
-        if (!(u >= 0 && u <= 1)) continue;
+        if (!(u >= 0 && u <= 1) || (i == 1 && u == roots[0])) continue;
         // o + t d = origin + v line: solved with the common perpendicular of d and the line.
         const Vec3d origin = lerp(u, c.p00, c.p10), line = lerp(u, c.p01, c.p11) - origin;
         const Vec3d delta = origin - o, perpendicular = cross(d, line);
@@ -106,7 +107,9 @@ int BilinearPatchMesh::hits(int patch, Vec3f o_f, Vec3f d_f, float t_max, Hit ou
         if (p2 == 0) continue;
         const double v = determinant(delta, d, perpendicular) / p2;
         const double t = determinant(delta, line, perpendicular) / p2;
-        if (!(v >= 0 && v <= 1) || !(t > 0) || !(t < double(t_max))) continue;
+        const bool on_patch = v >= 0 && v <= 1;
+        const bool ahead = t > 0 && t < double(t_max) && t < double(std::numeric_limits<float>::max());
+        if (!on_patch || !ahead) continue;
         const float t_f = float(t);
         if (!(t_f > 0) || !(t_f < t_max)) continue;
         out[count++] = {t_f, {float(u), float(v)}};
@@ -121,7 +124,13 @@ Vec3f BilinearPatchMesh::point(int patch, Vec2f uv) const {
 
 Vec3f BilinearPatchMesh::normal(int patch, Vec2f uv) const {
     const PatchCorners c = corners_in_double(corners(patch));
-    Vec3f n = normalize(cross(c.dpdu(uv.y), c.dpdv(uv.x))).to_float();
+    Vec3d winding = cross(c.dpdu(uv.y), c.dpdv(uv.x));
+    // Where an edge has collapsed to a point (a patch that is a triangle), dP/du x dP/dv vanishes
+    // along it; the diagonals' cross product has the same orientation (twice dP/du x dP/dv for a
+    // parallelogram) and is the plane's normal for planar patches.
+    if (!(length_squared(winding) > 0)) winding = cross(c.p11 - c.p00, c.p01 - c.p10);
+    if (!(length_squared(winding) > 0)) return {0, 0, 1};
+    Vec3f n = normalize(winding).to_float();
     if (!n_.empty()) {
         const int *v = &indices_[4 * size_t(patch)];
         const Vec3f ns = lerp(uv.x, lerp(uv.y, n_[v[0]], n_[v[2]]), lerp(uv.y, n_[v[1]], n_[v[3]]));

@@ -86,6 +86,13 @@ TEST(BilinearPatch, NormalsFollowPbrtV4sOrientationRule) {
     EXPECT_GT(dot(si.shading.n, normalize(down[0])), 1 - 1e-6f);
     saddle({}, false, down)->interaction(0, {0.5f, 0.5f}, &si);
     EXPECT_GT(dot(si.shading.n, normalize(Vec3f{0.05f, 0, -1})), 1 - 1e-6f);
+    // A patch whose p10-p11 edge has collapsed (a triangle) has a normal along that edge too:
+    // dP/du x dP/dv vanishes there, and the diagonals give the plane's.
+    const BilinearPatchMesh triangle({}, false, {0, 1, 2, 3}, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}}, {}, {});
+    for (Vec2f uv : {Vec2f{1, 0.5f}, Vec2f{0.3f, 0.4f}}) {
+        const Vec3f n = triangle.normal(0, uv);
+        EXPECT_EQ(n.z, 1) << uv.x << " " << uv.y;
+    }
 }
 
 // With "uv", dp/du and dp/dv are the derivatives along the texture coordinates (s, t): here a
