@@ -29,6 +29,23 @@ PatchCorners corners_in_double(const std::array<Vec3f, 4> &c) {
     return {Vec3d(c[0]), Vec3d(c[1]), Vec3d(c[2]), Vec3d(c[3])};
 }
 
+// The unit normal of the patch's winding, dP/du x dP/dv, at uv. Where an edge has collapsed to a
+// point (a patch that is a triangle) that product vanishes along it; the diagonals' cross product
+// has the same orientation (twice dP/du x dP/dv for a parallelogram) and is the plane's normal
+// for planar patches.
+Vec3f winding_normal(const PatchCorners &c, Vec2f uv) {
+    Vec3d winding = cross(c.dpdu(uv.y), c.dpdv(uv.x));
+    if (!(length_squared(winding) > 0)) winding = cross(c.p11 - c.p00, c.p01 - c.p10);
+    if (!(length_squared(winding) > 0)) return {0, 0, 1};
+    return normalize(winding).to_float();
+}
+
+// Per-vertex values at a patch's corners v, interpolated bilinearly at uv.
+template <typename T>
+T interpolate(const std::vector<T> &values, const int *v, Vec2f uv) {
+    return lerp(uv.x, lerp(uv.y, values[v[0]], values[v[2]]), lerp(uv.y, values[v[1]], values[v[3]]));
+}
+
 // The real roots of a u^2 + b u + c in increasing order; returns their number. A quadratic term
 // that is negligible against the others (a patch that is nearly a parallelogram) leaves the
 // linear equation.
@@ -122,27 +139,18 @@ Vec3f BilinearPatchMesh::point(int patch, Vec2f uv) const {
     return corners_in_double(corners(patch)).point(uv.x, uv.y).to_float();
 }
 
-Vec3f BilinearPatchMesh::normal(int patch, Vec2f uv) const {
-    const PatchCorners c = corners_in_double(corners(patch));
-    Vec3d winding = cross(c.dpdu(uv.y), c.dpdv(uv.x));
-    // Where an edge has collapsed to a point (a patch that is a triangle), dP/du x dP/dv vanishes
-    // along it; the diagonals' cross product has the same orientation (twice dP/du x dP/dv for a
-    // parallelogram) and is the plane's normal for planar patches.
-    if (!(length_squared(winding) > 0)) winding = cross(c.p11 - c.p00, c.p01 - c.p10);
-    if (!(length_squared(winding) > 0)) return {0, 0, 1};
-    Vec3f n = normalize(winding).to_float();
-    if (!n_.empty()) {
-        const int *v = &indices_[4 * size_t(patch)];
-        const Vec3f ns = lerp(uv.x, lerp(uv.y, n_[v[0]], n_[v[2]]), lerp(uv.y, n_[v[1]], n_[v[3]]));
-        return length_squared(ns) > 0 ? face_forward(n, ns) : n;
-    }
+Vec3f BilinearPatchMesh::oriented(Vec3f n, Vec3f n_interpolated) const {
+    if (!n_.empty()) return length_squared(n_interpolated) > 0 ? face_forward(n, n_interpolated) : n;
     return flip_normal_ ? -n : n;
 }
 
+Vec3f BilinearPatchMesh::normal(int patch, Vec2f uv) const {
+    const Vec3f n = winding_normal(corners_in_double(corners(patch)), uv);
+    return oriented(n, n_.empty() ? Vec3f{} : interpolate(n_, &indices_[4 * size_t(patch)], uv));
+}
+
 Vec2f BilinearPatchMesh::texture_uv(int patch, Vec2f uv) const {
-    if (uv_.empty()) return uv;
-    const int *v = &indices_[4 * size_t(patch)];
-    return lerp(uv.x, lerp(uv.y, uv_[v[0]], uv_[v[2]]), lerp(uv.y, uv_[v[1]], uv_[v[3]]));
+    return uv_.empty() ? uv : interpolate(uv_, &indices_[4 * size_t(patch)], uv);
 }
 
 float BilinearPatchMesh::area_element(int patch, Vec2f uv) const {
@@ -183,7 +191,7 @@ void BilinearPatchMesh::interaction(int patch, Vec2f uv, SurfaceInteraction *si)
     si->face_index = patch;
     Vec3d dpdu = c.dpdu(uv.y), dpdv = c.dpdv(uv.x);
     const Vec3d n_winding = cross(dpdu, dpdv);
-    si->uv = texture_uv(patch, uv);
+    si->uv = uv_.empty() ? uv : interpolate(uv_, v, uv);
     if (!uv_.empty()) {
         // Derivatives with respect to the texture coordinates (s, t): through the inverse of the
         // Jacobian d(s, t)/d(u, v) of the bilinear map of the uv corners. pbrt-v4 inverts each
@@ -204,12 +212,11 @@ void BilinearPatchMesh::interaction(int patch, Vec2f uv, SurfaceInteraction *si)
     }
     si->dpdu = dpdu.to_float();
     si->dpdv = dpdv.to_float();
-    si->n = normal(patch, uv);
+    const Vec3f n_interpolated = n_.empty() ? Vec3f{} : interpolate(n_, v, uv);
+    si->n = oriented(winding_normal(c, uv), n_interpolated);
     si->shading.n = si->n;
     si->shading.dpdu = si->dpdu;
     si->shading.dpdv = si->dpdv;
-    if (n_.empty()) return;
-    const Vec3f n_interpolated = lerp(uv.x, lerp(uv.y, n_[v[0]], n_[v[2]]), lerp(uv.y, n_[v[1]], n_[v[3]]));
     if (length_squared(n_interpolated) > 0) si->set_shading_normal(normalize(n_interpolated));
 }
 

@@ -63,6 +63,10 @@ class BilinearPatchMesh {
     Vec2f parameters_of(int patch, Vec3f p) const;
 
   private:
+    // The unit normal n of the patch's winding, turned by pbrt-v4's orientation rule: to the side
+    // of the interpolated normal where the mesh has normals, else flipped by flip_normal_.
+    Vec3f oriented(Vec3f n, Vec3f n_interpolated) const;
+
     std::vector<int> indices_;
     std::vector<Vec3f> p_, n_;
     std::vector<Vec2f> uv_;

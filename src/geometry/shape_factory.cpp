@@ -57,6 +57,16 @@ std::shared_ptr<ShapeGroup> mesh_group(const std::string &type, MeshData data,
     return group;
 }
 
+// Exact bilinear patches of validated arrays (four indices per patch).
+std::shared_ptr<ShapeGroup> patch_group(const std::string &type, std::vector<int> indices, MeshData data,
+                                        const Transform &render_from_object, bool reverse_orientation) {
+    auto group = std::make_shared<ShapeGroup>();
+    group->type = type;
+    group->patches = std::make_shared<BilinearPatchMesh>(render_from_object, reverse_orientation, std::move(indices),
+                                                         std::move(data.p), std::move(data.n), std::move(data.uv));
+    return group;
+}
+
 std::shared_ptr<ShapeGroup> create_triangle_mesh(const Transform &render_from_object,
                                                  bool reverse_orientation,
                                                  const ParameterDictionary &params,
@@ -101,12 +111,8 @@ std::shared_ptr<ShapeGroup> create_ply_mesh(const Transform &render_from_object,
                         (displacement ? "displacement refines triangles" : "the file also holds triangles") + ")");
         } else {
             validate_bilinear_patches(data.quads, data.p, data.n, data.uv, params.location("filename"));
-            auto group = std::make_shared<ShapeGroup>();
-            group->type = "plymesh";
-            group->patches = std::make_shared<BilinearPatchMesh>(render_from_object, reverse_orientation,
-                                                                 std::move(data.quads), std::move(data.p),
-                                                                 std::move(data.n), std::move(data.uv));
-            return group;
+            std::vector<int> quads = std::move(data.quads);
+            return patch_group("plymesh", std::move(quads), std::move(data), render_from_object, reverse_orientation);
         }
     }
     split_quads(&data);
@@ -153,11 +159,8 @@ std::shared_ptr<ShapeGroup> create_bilinear_mesh(const Transform &render_from_ob
     if (bilinear_patches_are_affine(indices, p, n, uv))
         return mesh_group("bilinearmesh", triangulate_bilinear_patches(indices, p, n, uv), render_from_object,
                           reverse_orientation, params.location("indices"), "bilinearmesh");
-    auto group = std::make_shared<ShapeGroup>();
-    group->type = "bilinearmesh";
-    group->patches = std::make_shared<BilinearPatchMesh>(render_from_object, reverse_orientation, std::move(indices),
-                                                         std::move(p), std::move(n), std::move(uv));
-    return group;
+    return patch_group("bilinearmesh", std::move(indices), MeshData{{}, {}, std::move(p), std::move(n), std::move(uv)},
+                       render_from_object, reverse_orientation);
 }
 
 std::shared_ptr<ShapeGroup> create_sphere(const Transform &render_from_object,

@@ -147,7 +147,9 @@ TEST(BilinearPatch, SamplesHaveTheAreaDensityTheyReport) {
     for (int i = 0; i < n; ++i) {
         const std::optional<ShapeSample> s = patch.sample(rng.uniform2());
         ASSERT_TRUE(s && s->pdf > 0);
-        if (i % 4096 == 0) EXPECT_NEAR(patch.pdf_area(s->p), s->pdf, 1e-4f * s->pdf);
+        if (i % 4096 == 0) {
+            EXPECT_NEAR(patch.pdf_area(s->p), s->pdf, 1e-4f * s->pdf);
+        }
         area_estimate += 1 / (double(s->pdf) * n);
         moment_estimate += s->p.x / (double(s->pdf) * n);
     }
