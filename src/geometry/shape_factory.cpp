@@ -91,36 +91,38 @@ std::shared_ptr<ShapeGroup> create_triangle_mesh(const Transform &render_from_ob
                       params.location("indices"), "trianglemesh");
 }
 
-std::shared_ptr<ShapeGroup> create_ply_mesh(const Transform &render_from_object,
-                                            bool reverse_orientation,
-                                            const ParameterDictionary &params,
-                                            const SourceLocation &loc, const FloatTexture *displacement) {
+std::vector<std::shared_ptr<ShapeGroup>> create_ply_mesh(const Transform &render_from_object,
+                                                         bool reverse_orientation,
+                                                         const ParameterDictionary &params,
+                                                         const SourceLocation &loc,
+                                                         const FloatTexture *displacement) {
     std::string filename = params.get_one_string("filename", "");
     if (filename.empty()) throw InputError(loc, "plymesh: no \"filename\" given");
     std::string path = params.file_path("filename", filename);
     const float edge_length = params.get_one_float("edgelength", 1);
     MeshData data = read_mesh_file(path, params.location("filename"));
+    const std::string what = "plymesh \"" + filename + "\"";
     // Quads are pbrt-v4's bilinear patches: the two triangles they are when affine, and exact
-    // patches when curved. Displacement refines triangles, and a shape holds either triangles or
-    // patches, so files that also hold triangles, or are displaced, have their curved quads
-    // split into two triangles each, with a warning.
-    if (!data.quads.empty() && !bilinear_patches_are_affine(data.quads, data.p, data.n, data.uv)) {
-        if (displacement || !data.indices.empty()) {
-            warning(params.location("filename"),
-                    "plymesh \"" + filename + "\": its curved quads are approximated by two triangles each (" +
-                        (displacement ? "displacement refines triangles" : "the file also holds triangles") + ")");
-        } else {
-            validate_bilinear_patches(data.quads, data.p, data.n, data.uv, params.location("filename"));
-            std::vector<int> quads = std::move(data.quads);
-            return patch_group("plymesh", std::move(quads), std::move(data), render_from_object, reverse_orientation);
-        }
+    // patches when curved, beside the file's triangles. Displacement refines triangles, so a
+    // displaced file's quads are split first, as pbrt-v4 does.
+    std::vector<std::shared_ptr<ShapeGroup>> groups;
+    if (!data.quads.empty() && !displacement &&
+        !bilinear_patches_are_affine(data.quads, data.p, data.n, data.uv)) {
+        validate_bilinear_patches(data.quads, data.p, data.n, data.uv, params.location("filename"));
+        std::vector<int> quads = std::move(data.quads);
+        data.quads.clear();
+        if (data.indices.empty())
+            return {patch_group("plymesh", std::move(quads), std::move(data), render_from_object, reverse_orientation)};
+        groups.push_back(patch_group("plymesh", std::move(quads), data, render_from_object, reverse_orientation));
     }
     split_quads(&data);
     if (displacement)
         data = displace_mesh(std::move(data), *displacement, edge_length, render_from_object,
                              params.location("displacement"), params.location("edgelength"));
-    return mesh_group("plymesh", std::move(data), render_from_object, reverse_orientation,
-                      params.location("filename"), "plymesh \"" + filename + "\"");
+    if (auto mesh = mesh_group("plymesh", std::move(data), render_from_object, reverse_orientation,
+                               params.location("filename"), what))
+        groups.insert(groups.begin(), std::move(mesh));
+    return groups;
 }
 
 std::shared_ptr<ShapeGroup> create_loop_subdivision(const Transform &render_from_object,
@@ -219,17 +221,12 @@ std::shared_ptr<ShapeGroup> create_cylinder(const Transform &render_from_object,
     return group;
 }
 
-} // namespace
-
-std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
-                                         const Transform &render_from_object,
-                                         bool reverse_orientation,
-                                         const ParameterDictionary &params,
-                                         const SourceLocation &loc, const FloatTexture *displacement) {
+// The shapes that are one group each.
+std::shared_ptr<ShapeGroup> create_shape(const std::string &type, const Transform &render_from_object,
+                                         bool reverse_orientation, const ParameterDictionary &params,
+                                         const SourceLocation &loc) {
     if (type == "trianglemesh")
         return create_triangle_mesh(render_from_object, reverse_orientation, params, loc);
-    if (type == "plymesh")
-        return create_ply_mesh(render_from_object, reverse_orientation, params, loc, displacement);
     if (type == "bilinearmesh")
         return create_bilinear_mesh(render_from_object, reverse_orientation, params, loc);
     if (type == "sphere") return create_sphere(render_from_object, reverse_orientation, params, loc);
@@ -252,6 +249,21 @@ std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
             return nullptr;
         }
     throw InputError(loc, "unknown shape type \"" + type + "\"");
+}
+
+} // namespace
+
+std::vector<std::shared_ptr<ShapeGroup>> create_shapes(const std::string &type,
+                                                       const Transform &render_from_object,
+                                                       bool reverse_orientation,
+                                                       const ParameterDictionary &params,
+                                                       const SourceLocation &loc,
+                                                       const FloatTexture *displacement) {
+    if (type == "plymesh")
+        return create_ply_mesh(render_from_object, reverse_orientation, params, loc, displacement);
+    if (auto group = create_shape(type, render_from_object, reverse_orientation, params, loc))
+        return {std::move(group)};
+    return {};
 }
 
 } // namespace caustica

@@ -7,22 +7,25 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace caustica {
 
 class FloatTexture;
 
 // "trianglemesh", "plymesh" (file relative to the scene's directory; .ply.gz accepted),
-// "bilinearmesh" (as triangles), "loopsubdiv", "sphere", "disk", "cylinder" and "curve".
-// pbrt-v3's quadrics, which pbrt-v4 dropped, give a warning naming them and nullptr; unknown
-// names are an InputError. Parameters are read from params, whose unread ones the
-// caller reports. `displacement` is a plymesh's "displacement" texture, which the caller finds
-// among the named textures (mesh_displacement.h); null for other shapes or none.
-std::shared_ptr<ShapeGroup> create_shape(const std::string &type,
-                                         const Transform &render_from_object,
-                                         bool reverse_orientation,
-                                         const ParameterDictionary &params,
-                                         const SourceLocation &loc,
-                                         const FloatTexture *displacement = nullptr);
+// "bilinearmesh", "loopsubdiv", "sphere", "disk", "cylinder" and "curve". One directive gives
+// one group, except a PLY file holding both triangles and curved quads, which gives a triangle
+// mesh and a group of patches, as pbrt-v4 makes both from such a file. pbrt-v3's quadrics,
+// which pbrt-v4 dropped, give a warning naming them and no group; unknown names are an
+// InputError. Parameters are read from params, whose unread ones the caller reports.
+// `displacement` is a plymesh's "displacement" texture, which the caller finds among the named
+// textures (mesh_displacement.h); null for other shapes or none.
+std::vector<std::shared_ptr<ShapeGroup>> create_shapes(const std::string &type,
+                                                       const Transform &render_from_object,
+                                                       bool reverse_orientation,
+                                                       const ParameterDictionary &params,
+                                                       const SourceLocation &loc,
+                                                       const FloatTexture *displacement = nullptr);
 
 } // namespace caustica

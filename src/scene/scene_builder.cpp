@@ -240,33 +240,36 @@ void add_shapes(const SceneDescription &d, const NamedTextures &textures, const 
                 const MediumTable &media, Scene &scene) {
     for (const ShapeEntity &s : d.shapes) {
         // A moving shape is built in its own space and placed by Embree at each ray's time.
-        auto group = create_shape(s.type, s.render_from_object_end ? Transform() : s.render_from_object,
-                                  s.reverse_orientation, s.params, s.loc, displacement_for(s, textures).get());
-        if (!group) continue;
-        PrimitiveAttributes attrs;
-        attrs.alpha = alpha_for(s, textures);
-        attrs.material = material_for(s, materials);
-        attrs.medium_interface = interface_for(s, media, scene);
-        scene.features.medium_boundaries |= attrs.material == nullptr;
-        scene.features.curves |= group->curves != nullptr;
-        if (s.area_light_index >= 0) {
-            // pbrt-v4 cannot sample points on curves either (Curve::Sample aborts).
-            if (group->curves) throw InputError(s.loc, "curves cannot be area lights");
-            const SceneEntity &area = d.area_lights.at(s.area_light_index);
-            for (LightPtr &light :
-                 create_area_lights(area.type, area.params, group->shapes(), area.loc, attrs.alpha)) {
-                light->set_medium(find_medium(media, s.outside_medium));
-                attrs.area_lights.push_back(light.get());
-                scene.lights.push_back(std::move(light));
-            }
-        }
+        auto groups = create_shapes(s.type, s.render_from_object_end ? Transform() : s.render_from_object,
+                                    s.reverse_orientation, s.params, s.loc, displacement_for(s, textures).get());
+        if (groups.empty()) continue;
+        PrimitiveAttributes shared;
+        shared.alpha = alpha_for(s, textures);
+        shared.material = material_for(s, materials);
+        shared.medium_interface = interface_for(s, media, scene);
+        scene.features.medium_boundaries |= shared.material == nullptr;
         scene.shape_count += 1;
-        scene.triangle_count += group->triangle_count();
-        if (s.render_from_object_end)
-            scene.geometry.add_moving(group, std::move(attrs), {s.render_from_object, *s.render_from_object_end});
-        else
-            scene.geometry.add(group, std::move(attrs));
-        scene.shape_groups.push_back(std::move(group));
+        for (std::shared_ptr<ShapeGroup> &group : groups) {
+            PrimitiveAttributes attrs = shared;
+            scene.features.curves |= group->curves != nullptr;
+            if (s.area_light_index >= 0) {
+                // pbrt-v4 cannot sample points on curves either (Curve::Sample aborts).
+                if (group->curves) throw InputError(s.loc, "curves cannot be area lights");
+                const SceneEntity &area = d.area_lights.at(s.area_light_index);
+                for (LightPtr &light :
+                     create_area_lights(area.type, area.params, group->shapes(), area.loc, attrs.alpha)) {
+                    light->set_medium(find_medium(media, s.outside_medium));
+                    attrs.area_lights.push_back(light.get());
+                    scene.lights.push_back(std::move(light));
+                }
+            }
+            scene.triangle_count += group->triangle_count();
+            if (s.render_from_object_end)
+                scene.geometry.add_moving(group, std::move(attrs), {s.render_from_object, *s.render_from_object_end});
+            else
+                scene.geometry.add(group, std::move(attrs));
+            scene.shape_groups.push_back(std::move(group));
+        }
     }
 }
 
@@ -276,9 +279,9 @@ void add_instances(const SceneDescription &d, const NamedTextures &textures,
     for (const InstanceDefinition &def : d.instances) {
         std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> members;
         for (const ShapeEntity &s : def.shapes) {
-            auto group = create_shape(s.type, s.render_from_object, s.reverse_orientation, s.params, s.loc,
-                                      displacement_for(s, textures).get());
-            if (!group) continue;
+            auto groups = create_shapes(s.type, s.render_from_object, s.reverse_orientation, s.params, s.loc,
+                                        displacement_for(s, textures).get());
+            if (groups.empty()) continue;
             if (s.area_light_index >= 0)
                 warning(s.loc, "area lights inside object instances are not supported; the shape "
                                "is instanced without emission");
@@ -287,10 +290,12 @@ void add_instances(const SceneDescription &d, const NamedTextures &textures,
             attrs.material = material_for(s, materials);
             attrs.medium_interface = interface_for(s, media, scene);
             scene.features.medium_boundaries |= attrs.material == nullptr;
-            scene.features.curves |= group->curves != nullptr;
-            scene.triangle_count += group->triangle_count();
-            scene.shape_groups.push_back(group);
-            members.emplace_back(std::move(group), std::move(attrs));
+            for (std::shared_ptr<ShapeGroup> &group : groups) {
+                scene.features.curves |= group->curves != nullptr;
+                scene.triangle_count += group->triangle_count();
+                scene.shape_groups.push_back(group);
+                members.emplace_back(std::move(group), attrs);
+            }
         }
         prototypes[def.name] = scene.geometry.add_prototype(std::move(members));
     }

@@ -10,6 +10,7 @@
 namespace caustica {
 namespace {
 
+using test::create_shape;
 using test::dictionary;
 using test::numbers;
 using test::strings;

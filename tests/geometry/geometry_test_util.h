@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "geometry/embree_scene.h"
+#include "geometry/shape_factory.h"
 #include "geometry/shape_group.h"
 #include "geometry/triangle_mesh.h"
 #include "params/parameters.h"
@@ -31,6 +32,16 @@ inline std::shared_ptr<ShapeGroup> analytic_group(std::shared_ptr<AnalyticShape>
     group->type = "analytic";
     group->analytic = std::move(shape);
     return group;
+}
+
+// The one group a Shape directive makes (null for none); the directives the tests use make at
+// most one.
+inline std::shared_ptr<ShapeGroup> create_shape(const std::string &type, const Transform &render_from_object,
+                                                bool reverse_orientation, const ParameterDictionary &params,
+                                                const SourceLocation &loc) {
+    auto groups = create_shapes(type, render_from_object, reverse_orientation, params, loc);
+    EXPECT_LE(groups.size(), 1u);
+    return groups.empty() ? nullptr : groups.front();
 }
 
 // A scene holding just the given groups, committed.

@@ -8,6 +8,7 @@
 namespace caustica {
 namespace {
 
+using test::create_shape;
 using test::dictionary;
 using test::numbers;
 using test::strings;
@@ -193,6 +194,24 @@ TEST(CreateShape, PlyMeshWithACurvedQuad) {
     EXPECT_NEAR(si.p.z, 0.18f, 1e-6);
     EXPECT_NEAR(si.uv.x, 0.3f, 1e-6);
     EXPECT_NEAR(si.uv.y, 0.6f, 1e-6);
+}
+
+// pbrt-v4 makes a triangle mesh and bilinear patches of a file that holds both.
+TEST(CreateShape, PlyMeshWithTrianglesAndACurvedQuad) {
+    auto params = dictionary({strings("string", "filename", {"saddle-quad-and-triangle.ply"})}, data_dir);
+    auto groups = create_shapes("plymesh", {}, false, params, loc);
+    ASSERT_EQ(groups.size(), 2u);
+    ASSERT_TRUE(groups[0]->mesh && !groups[0]->patches);
+    ASSERT_TRUE(groups[1]->patches && !groups[1]->mesh);
+    EXPECT_EQ(groups[0]->triangle_count(), 1u);
+    EXPECT_NEAR(total_area(*groups[0]), 0.5, 1e-6);
+    EXPECT_EQ(groups[1]->primitive_count(), 1u);
+    auto scene = test::scene_of({groups[0], groups[1]});
+    SurfaceInteraction si;
+    ASSERT_TRUE(scene->intersect({{0.3f, 0.6f, -1}, {0, 0, 1}}, &si));
+    EXPECT_NEAR(si.p.z, 0.18f, 1e-6); // on the saddle, not on a split quad's flat triangle
+    ASSERT_TRUE(scene->intersect({{2.2f, 0.3f, -1}, {0, 0, 1}}, &si));
+    EXPECT_NEAR(si.p.z, 0.f, 1e-6);
 }
 
 // The binary PLY of pbrt-v4's scene collection that made Assimp abort: its body starts with a
