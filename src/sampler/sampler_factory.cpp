@@ -3,6 +3,7 @@
 #include "sampler/halton_sampler.h"
 #include "sampler/independent_sampler.h"
 #include "sampler/padded_sobol_sampler.h"
+#include "sampler/pmj02bn_sampler.h"
 #include "sampler/sobol_sampler.h"
 #include "sampler/stratified_sampler.h"
 #include "sampler/zsobol_sampler.h"
@@ -74,21 +75,24 @@ std::unique_ptr<Sampler> create_sampler(const std::string &type, const Parameter
                              "\"fastowen\" randomization is not supported by the halton sampler (as in pbrt-v4)");
         return std::make_unique<HaltonSampler>(spp, resolution, seed, randomization);
     }
-    const bool substitute = type == "pmj02bn";
-    if (type == "zsobol" || type == "paddedsobol" || type == "sobol" || substitute) {
+    if (type == "pmj02bn") {
         int spp = spp_override > 0 ? spp_override : positive_count(params, "pixelsamples", 16);
-        // pbrt-v4's default is fastowen. pmj02bn has no randomization parameter, so a stray one
-        // is reported as unused.
-        Randomization randomization = Randomization::FastOwen;
-        if (type != "pmj02bn") {
-            randomization = randomization_parameter(params, "fastowen");
+        if (!std::has_single_bit(uint32_t(spp)) || std::countr_zero(uint32_t(spp)) % 2 != 0) {
+            std::string message = "the \"pmj02bn\" sampler stratifies best with a power-of-4 sample count "
+                                  "(1, 4, 16, 64, ...), not " + std::to_string(spp);
+            if (spp_override > 0)
+                warning(message);
+            else
+                warning(loc, message);
         }
+        return std::make_unique<Pmj02bnSampler>(spp, seed);
+    }
+    if (type == "zsobol" || type == "paddedsobol" || type == "sobol") {
+        int spp = spp_override > 0 ? spp_override : positive_count(params, "pixelsamples", 16);
+        // pbrt-v4's default is fastowen.
+        Randomization randomization = randomization_parameter(params, "fastowen");
         if (type == "paddedsobol") return std::make_unique<PaddedSobolSampler>(spp, seed, randomization);
         if (type == "sobol") return std::make_unique<SobolSampler>(spp, seed, randomization);
-        if (substitute)
-            warning(loc, "the \"" + type + "\" sampler is not implemented; using \"zsobol\" "
-                         "(Owen-scrambled Sobol with blue-noise pixel ordering) with the same " +
-                             std::to_string(spp) + " samples per pixel");
         warn_if_not_power_of_two(spp_override > 0 ? nullptr : &loc, spp);
         return std::make_unique<ZSobolSampler>(spp, seed, randomization);
     }

@@ -10,15 +10,15 @@
 
 namespace caustica {
 
-// Implemented: "independent" ("pixelsamples", default 4), "stratified" ("xsamples",
+// pbrt-v4's samplers: "independent" ("pixelsamples", default 4), "stratified" ("xsamples",
 // "ysamples", default 4 each, "jitter", default true), "zsobol", "paddedsobol" and "sobol"
 // ("pixelsamples", default 16; "randomization": "none", "permutedigits", "fastowen" or "owen",
-// default "fastowen" as in pbrt-v4). "halton" and "pmj02bn" are replaced, with a warning, by
-// "zsobol" with the same sample count (and halton's randomization when given, whose names
-// zsobol shares; as in pbrt, halton rejects "fastowen"). zsobol warns about sample counts that
-// are not powers of two. The "seed" parameter overrides `seed`; spp_override > 0 (the command
-// line) replaces the sample count. Unknown types, unknown randomizations and non-positive
-// sample counts are InputErrors.
+// default "fastowen" as in pbrt-v4), "halton" ("pixelsamples", default 16; "randomization"
+// default "permutedigits"; as in pbrt-v4 it rejects "fastowen") and "pmj02bn" ("pixelsamples",
+// default 16). zsobol warns about sample counts that are not powers of two, and pmj02bn about
+// counts that are not powers of 4, as pbrt-v4 does. The "seed" parameter overrides `seed`;
+// spp_override > 0 (the command line) replaces the sample count. Unknown types, unknown
+// randomizations and non-positive sample counts are InputErrors.
 // `resolution` is the film's (the halton sampler tiles the image with it).
 std::unique_ptr<Sampler> create_sampler(const std::string &type, const ParameterDictionary &params,
                                         const SourceLocation &loc, int seed, int spp_override = 0,

@@ -25,6 +25,7 @@
 // randomisations and an unbiased estimate continues to converge.
 #pragma once
 
+#include "sampler/quadtree_shuffle.h"
 #include "sampler/randomization.h"
 #include "sampler/sampler.h"
 
@@ -66,8 +67,5 @@ class ZSobolSampler final : public Sampler {
     uint64_t cached_dimensions_ = 0;
     std::array<uint32_t, CachedDimensions> shuffled_morton_{};
 };
-
-// Interleaves the bits of x (even positions) and y (odd positions): the Z-curve order.
-uint32_t morton_code(uint16_t x, uint16_t y);
 
 } // namespace caustica

@@ -1,6 +1,7 @@
 #include "sampler/halton_sampler.h"
 #include "sampler/independent_sampler.h"
 #include "sampler/padded_sobol_sampler.h"
+#include "sampler/pmj02bn_sampler.h"
 #include "sampler/sample_hash.h"
 #include "sampler/sampler_factory.h"
 #include "sampler/sobol_sampler.h"
@@ -80,6 +81,8 @@ std::vector<std::unique_ptr<Sampler>> all_samplers(int seed) {
     s.push_back(std::make_unique<SobolSampler>(16, seed, Randomization::Owen));
     s.push_back(std::make_unique<HaltonSampler>(16, Vec2i{64, 48}, seed, Randomization::PermuteDigits));
     s.push_back(std::make_unique<HaltonSampler>(8, Vec2i{300, 200}, seed, Randomization::Owen));
+    s.push_back(std::make_unique<Pmj02bnSampler>(16, seed));
+    s.push_back(std::make_unique<Pmj02bnSampler>(8, seed));
     return s;
 }
 
@@ -245,7 +248,7 @@ TEST(SamplerFactory, CreatesPbrtSamplers) {
     s->start_pixel_sample({0, 0}, 0);
     float u = s->get_1d();
     EXPECT_FLOAT_EQ(u * 6 - int(u * 6), 0.5f);  // no jitter: stratum centres
-    // The low-discrepancy samplers: pbrt's default of 16 samples; pmj02bn is replaced by zsobol.
+    // The low-discrepancy samplers: pbrt's default of 16 samples.
     auto is_a = [](const std::unique_ptr<Sampler> &p, auto *type) {
         return dynamic_cast<std::remove_pointer_t<decltype(type)> *>(p.get()) != nullptr;
     };
@@ -257,7 +260,7 @@ TEST(SamplerFactory, CreatesPbrtSamplers) {
     }
     EXPECT_TRUE(is_a(create_sampler("zsobol", dict({}), loc, 0), (ZSobolSampler *)nullptr));
     EXPECT_TRUE(is_a(create_sampler("halton", dict({}), loc, 0), (HaltonSampler *)nullptr));
-    EXPECT_TRUE(is_a(create_sampler("pmj02bn", dict({}), loc, 0), (ZSobolSampler *)nullptr));
+    EXPECT_TRUE(is_a(create_sampler("pmj02bn", dict({}), loc, 0), (Pmj02bnSampler *)nullptr));
     EXPECT_TRUE(is_a(create_sampler("paddedsobol", dict({}), loc, 0), (PaddedSobolSampler *)nullptr));
     EXPECT_TRUE(is_a(create_sampler("sobol", dict({}), loc, 0), (SobolSampler *)nullptr));
     EXPECT_TRUE(is_a(create_default_sampler(0), (ZSobolSampler *)nullptr));
@@ -309,13 +312,12 @@ TEST(SamplerFactory, RandomizationParameterSelectsTheScramble) {
                      InputError);
     }
     // pbrt-v4's defaults: permutedigits for halton, fastowen everywhere else, also for the
-    // default sampler and the pmj02bn substitute.
+    // default sampler.
     EXPECT_EQ(sequence(*create_sampler("halton", dict({}), loc, 3), {1, 2}, 0, 9),
               sequence(*std::make_unique<HaltonSampler>(16, Vec2i{1280, 720}, 3, Randomization::PermuteDigits),
                        {1, 2}, 0, 9));
-    for (const char *type : {"zsobol", "pmj02bn"})
-        EXPECT_EQ(sequence(*create_sampler(type, dict({}), loc, 3), {1, 2}, 0, 9),
-                  sequence(*std::make_unique<ZSobolSampler>(16, 3, Randomization::FastOwen), {1, 2}, 0, 9));
+    EXPECT_EQ(sequence(*create_sampler("zsobol", dict({}), loc, 3), {1, 2}, 0, 9),
+              sequence(*std::make_unique<ZSobolSampler>(16, 3, Randomization::FastOwen), {1, 2}, 0, 9));
     EXPECT_EQ(sequence(*create_sampler("paddedsobol", dict({}), loc, 3), {1, 2}, 0, 9),
               sequence(*std::make_unique<PaddedSobolSampler>(16, 3, Randomization::FastOwen), {1, 2}, 0, 9));
     EXPECT_EQ(sequence(*create_sampler("sobol", dict({}), loc, 3), {1, 2}, 0, 9),
@@ -325,17 +327,20 @@ TEST(SamplerFactory, RandomizationParameterSelectsTheScramble) {
     set_warnings_enabled(true);
 }
 
-TEST(SamplerFactory, WarnsAboutSubstitutesAndNonPowerOfTwoCounts) {
+TEST(SamplerFactory, WarnsAboutCountsThatStratifyBadly) {
     SourceLocation loc{"scene.pbrt", 3, 1};
     auto warnings_of = [&](const std::string &type, std::vector<ParsedParameter> params, int spp) {
         testing::internal::CaptureStderr();
         create_sampler(type, dict(std::move(params)), loc, 0, spp);
         return testing::internal::GetCapturedStderr();
     };
-    std::string pmj = warnings_of("pmj02bn", {}, 0);
+    // pmj02bn, as in pbrt-v4, for counts that are not powers of 4.
+    EXPECT_EQ(warnings_of("pmj02bn", {}, 0), "");
+    EXPECT_EQ(warnings_of("pmj02bn", {integer_param("pixelsamples", 64)}, 0), "");
+    std::string pmj = warnings_of("pmj02bn", {integer_param("pixelsamples", 8)}, 0);
     EXPECT_NE(pmj.find("scene.pbrt:3:1: warning"), std::string::npos) << pmj;
-    EXPECT_NE(pmj.find("\"pmj02bn\""), std::string::npos) << pmj;
-    EXPECT_NE(pmj.find("\"zsobol\""), std::string::npos) << pmj;
+    EXPECT_NE(pmj.find("power-of-4"), std::string::npos) << pmj;
+    EXPECT_NE(warnings_of("pmj02bn", {}, 32).find("power-of-4"), std::string::npos);
     EXPECT_EQ(warnings_of("halton", {integer_param("pixelsamples", 12)}, 0), "");
     EXPECT_EQ(warnings_of("zsobol", {}, 0), "");
     EXPECT_EQ(warnings_of("zsobol", {integer_param("pixelsamples", 64)}, 0), "");
