@@ -41,14 +41,47 @@ struct SubpathContext {
     float time; // of the camera ray, which the light subpath shares
 };
 
+// The emitter that stands for an emissive medium's light (null for a medium that emits none).
+const Light *medium_emitter_of(const Scene &scene, const Medium *medium) {
+    for (const LightPtr &emitter : scene.medium_emitters)
+        if (emitter->medium() == medium) return emitter.get();
+    return nullptr;
+}
+
+// The mean extinction over the wavelengths at a point of a medium (PathVertex::collision_sigma).
+float mean_extinction(const Medium &medium, Vec3f p, const SampledWavelengths &lambda) {
+    const MediumProperties mp = medium.properties(p, lambda);
+    return (mp.sigma_a + mp.sigma_s).average();
+}
+
+// The MIS weight of the emission that the camera subpath path[0, count) collected at a collision
+// in a medium (s = 0), against the light subpaths that start at that point: the collision is the
+// subpath's next vertex, a medium emitter reached with solid-angle density pdf_fwd from
+// path[count - 1] (held in path[count] while the weight is computed).
+float medium_emission_weight(const SubpathContext &ctx, const SubpathWalk &walk, PathVertex *path, int count,
+                             float pdf_fwd) {
+    const Light *emitter = medium_emitter_of(ctx.scene, walk.medium());
+    if (!emitter) return 1;
+    PathVertex &collision = start_vertex(path[count]);
+    collision.type = PathVertexType::Light;
+    collision.light = emitter;
+    collision.medium = walk.medium();
+    collision.si.p = walk.emission_point();
+    collision.jumps = path[count - 1].jumps;
+    collision.collision_sigma = mean_extinction(*walk.medium(), collision.si.p, walk.lambda());
+    collision.pdf_fwd = path[count - 1].convert_density(pdf_fwd, collision);
+    return bdpt_mis_weight(ctx.scene, nullptr, path, collision, 0, count + 1);
+}
+
 // Extends the subpath whose last vertex is path[count - 1] by following ray, whose direction
 // was sampled there with solid-angle density pdf_fwd, until max_count vertices exist; returns the
 // new count. beta is the throughput carried by the ray, medium the one it starts in. Camera
 // subpaths (Radiance) that leave the scene end in a vertex at infinity when there are environment
-// lights to receive. Camera subpaths add to *camera_only what only they reach: the emission of
-// emissive media they meet (with weight 1: no other strategy samples it), while fewer than
-// max_count - 2 scattering vertices lie behind (the path tracer's maxdepth rule), and the light
-// that fluorescent surfaces re-radiate (path_tracing.h), after which the subpath ends.
+// lights to receive. Camera subpaths add to *camera_only what they collect along the way: the
+// emission of emissive media they meet, MIS-weighted against the light subpaths that start
+// there, while fewer than max_count - 2 scattering vertices lie behind (the path tracer's
+// maxdepth rule: the emission counts as a scattering event), and the light that fluorescent
+// surfaces re-radiate (path_tracing.h), after which the subpath ends.
 int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum &beta, float pdf_fwd,
                 TransportMode mode, const Medium *medium, PathVertex *path, int count, int max_count,
                 SampledSpectrum *camera_only = nullptr,
@@ -61,7 +94,8 @@ int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum
     auto counted = [&] { return count - path[count - 1].jumps; };
     while (counted() < max_count) {
         const WalkEvent event = walk.advance();
-        if (camera_only && counted() + 1 < max_count) *camera_only += walk.emitted();
+        if (camera_only && counted() + 1 < max_count && !walk.emitted().is_black())
+            *camera_only += walk.emitted() * medium_emission_weight(ctx, walk, path, count, pdf_fwd);
         if (event == WalkEvent::Ended) break;
         PathVertex &prev = path[count - 1];
         if (event == WalkEvent::Escaped) {
@@ -160,10 +194,12 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
                        path, 1, max_count, camera_only, camera_ray.differential);
 }
 
-// The light subpath: a light chosen by power, an emitted ray, then scattering vertices.
+// The light subpath: a light or an emissive medium chosen by power, an emitted ray, then
+// scattering vertices.
 int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     const Scene &scene = ctx.scene;
-    const std::optional<LightPathStart> start = start_light_path(scene, ctx.sample.sampler, ctx.lambda, ctx.time);
+    const std::optional<LightPathStart> start = start_light_path(scene, ctx.sample.sampler, ctx.lambda, ctx.time,
+                                                                 LightPathSources::LightsAndEmissiveMedia);
     if (!start || max_count == 0) return 0;
     const Light &light = *start->light;
     const LightLeSample *les = &start->les;
@@ -180,6 +216,7 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     origin.medium = light.medium();
     origin.beta = les->L / (start->pmf * les->pdf_pos);
     origin.pdf_fwd = start->pmf * les->pdf_pos;
+    if (origin.is_medium_emitter()) origin.collision_sigma = mean_extinction(*origin.medium, origin.p(), ctx.lambda);
 
     const Vec3f d = normalize(les->ray.d);
     int count = random_walk(ctx, les->ray, origin.beta * (start->cos_origin / les->pdf_dir), les->pdf_dir,
@@ -246,8 +283,9 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         if (qs.type == PathVertexType::Light) {
             // The light point itself (s = 1): emission towards the lens, with the cosine at
             // the light, over the densities of the point.
-            L = qs.light->L(qs.p(), qs.ng(), qs.si.uv, cs->wi, ctx.lambda) *
-                (abs_dot(qs.ng(), cs->wi) / qs.pdf_fwd);
+            // A medium emits the same towards every direction, with no cosine.
+            const float cos_light = qs.is_medium_emitter() ? 1.f : abs_dot(qs.ng(), cs->wi);
+            L = qs.light->L(qs.p(), qs.ng(), qs.si.uv, cs->wi, ctx.lambda) * (cos_light / qs.pdf_fwd);
         } else {
             L = qs.beta * qs.f(cs->wi, TransportMode::Importance) * qs.cosine(cs->wi, TransportMode::Importance);
         }
@@ -304,6 +342,24 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
     return c;
 }
 
+// Strategy s = 1 for light that an emissive medium emits: next-event estimation samples lights
+// alone, so the camera vertex is joined to the light subpath's start when that lies in a medium:
+// the emission sigma_a Le, the same towards every direction, over the start's density.
+SampledSpectrum connect_to_medium_start(const SubpathContext &ctx, PathVertex *light_vertices, PathVertex *camera_vertices,
+                                        int t) {
+    const PathVertex &start = light_vertices[0], &pt = camera_vertices[t - 1];
+    if (!pt.connectible()) return SampledSpectrum(0.f);
+    Vec3f d = pt.p() - start.p();
+    const float dist2 = length_squared(d);
+    if (dist2 == 0) return SampledSpectrum(0.f);
+    d = d / std::sqrt(dist2);
+    SampledSpectrum L = start.beta * pt.f(-d, TransportMode::Radiance) * (pt.cosine(-d, TransportMode::Radiance) / dist2) * pt.beta;
+    if (L.is_black()) return L;
+    L *= connection_transmittance(ctx, start, pt);
+    if (L.is_black()) return L;
+    return L * bdpt_mis_weight(ctx.scene, light_vertices, camera_vertices, start, 1, t);
+}
+
 // Room for n vertices in the sample's scratch memory (released with it: vertices own nothing).
 // They are left unconstructed: a subpath starts each vertex it reaches (start_vertex), and
 // zeroing all max_depth + 2 of them up front, most never reached, cost a tenth of BDPT's time.
@@ -348,22 +404,31 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             // light subpath's first vertex to the lens and needs one. (Its MIS weight puts its
             // own light point in the first vertex's place, which must then hold a value.)
             if (n_light == 0) light_vertices[0] = PathVertex{};
+            // A light subpath that starts in an emissive medium counts its start as a scattering
+            // event, as the path tracer counts the emission it collects there.
+            const bool medium_start = n_light > 0 && light_vertices[0].is_medium_emitter();
+            auto add = [&](const Connection &c) {
+                if (c.L.is_black()) return;
+                SampledSpectrum contribution = hero_only(c.L, lambda);
+                // A non-finite value is a bug to fix at its source; counted, never filmed.
+                if (contribution.has_non_finite()) {
+                    ++sample.non_finite;
+                    return;
+                }
+                if (c.splat)
+                    film.add_splat(c.p_raster, contribution, lambda);
+                else
+                    L += contribution;
+            };
             for (int t = 1; t <= n_camera; ++t)
                 for (int s = 0; s <= std::max(n_light, t > 1 ? 1 : 0); ++s) {
                     const int depth = s + t - 2 - camera_vertices[t - 1].jumps - (s > 1 ? light_vertices[s - 1].jumps : 0);
-                    if (depth < 0 || depth > max_depth) continue;
-                    Connection c = connect(ctx, light_vertices, camera_vertices, s, t);
-                    if (c.L.is_black()) continue;
-                    SampledSpectrum contribution = hero_only(c.L, lambda);
-                    // A non-finite value is a bug to fix at its source; counted, never filmed.
-                    if (contribution.has_non_finite()) {
-                        ++sample.non_finite;
-                        continue;
-                    }
-                    if (c.splat)
-                        film.add_splat(c.p_raster, contribution, lambda);
-                    else
-                        L += contribution;
+                    if (depth < 0) continue;
+                    // s = 1 with t > 1 samples a light afresh: the medium start is joined on its own.
+                    const bool from_medium = medium_start && s > 0 && !(s == 1 && t > 1);
+                    if (depth + from_medium <= max_depth) add(connect(ctx, light_vertices, camera_vertices, s, t));
+                    if (medium_start && s == 1 && t > 1 && depth + 1 <= max_depth)
+                        add(Connection{connect_to_medium_start(ctx, light_vertices, camera_vertices, t), false, {}});
                 }
         }
         film.add_sample(pixel, L, lambda, cs.filter_weight);

@@ -10,7 +10,10 @@
 // along their segments (the shared SubpathWalk) and may scatter inside a medium, making medium
 // vertices, which connect like surface vertices with the phase function in place of the BSDF and
 // no cosine. Every connection, to the lens and to a sampled light point included, is weighted by
-// the transmittance of the media it crosses, and is zero when a surface blocks it.
+// the transmittance of the media it crosses, and is zero when a surface blocks it. Emissive
+// media are light sources here too: light subpaths start in them, chosen with the lights by
+// power, and the camera subpaths' collision estimate of their emission is one strategy among
+// the others (docs/media.md).
 //
 // One set of hero wavelengths serves both subpaths of a sample; a dispersive refraction on
 // either keeps only the hero wavelength for every contribution of that sample. Beer-Lambert

@@ -29,7 +29,8 @@ struct LightPathStart {
 };
 
 // Where light paths may start: the lights alone, or also emissive media (lights/medium_emitter.h)
-// for the integrators whose camera paths do not count the media's emission in full (lt, sppm).
+// for the integrators whose camera paths do not count the media's emission in full (lt, sppm,
+// bdpt).
 enum class LightPathSources { Lights, LightsAndEmissiveMedia };
 
 // Draws the light (one sampler dimension) and its ray (two 2D dimensions, drawn even when no

@@ -14,6 +14,14 @@
 // densities of sampling free-flight distances are left out of every stored density, as in
 // pbrt-v4: every strategy omits them alike, so the MIS weights still sum to one and the
 // estimator stays unbiased.
+//
+// The one exception is a point of an emissive medium where a light subpath starts (a "medium
+// emitter" vertex, is_medium_emitter). A light subpath draws it per unit volume, while a camera
+// subpath reaches it by a free flight, so the camera side's density there must include the
+// free flight's for the two to be compared. That density is not known in closed form in a
+// heterogeneous medium; convert_density uses that of a homogeneous medium with the point's
+// extinction, sigma e^(-sigma d). Every strategy uses the same function of the path, so the
+// weights still sum to one; the approximation only makes them less than optimal.
 #pragma once
 
 #include "geometry/interaction.h"
@@ -63,8 +71,12 @@ struct PathVertex {
     // the path tracer, so a strategy's path depth leaves them out.
     uint16_t jumps = 0;
     // Density of generating this vertex from its predecessor on its own subpath (pdf_fwd) and
-    // from its successor, i.e. by the other subpath's sampling (pdf_rev); area measure.
+    // from its successor, i.e. by the other subpath's sampling (pdf_rev); area measure (volume
+    // at a medium emitter vertex).
     float pdf_fwd = 0, pdf_rev = 0;
+    // Medium emitter vertices: the mean extinction over the carried wavelengths at the point,
+    // which sets the free-flight density of reaching it (see above).
+    float collision_sigma = 0;
 
     Vec3f p() const { return si.p; }
     Vec3f ng() const { return si.n; }
@@ -72,6 +84,11 @@ struct PathVertex {
     bool on_surface() const { return si.n != Vec3f{}; }
     // Emits light that a connection or a camera subpath can receive.
     bool is_light() const { return type == PathVertexType::Light || si.area_light != nullptr; }
+    // A point inside an emissive medium, where a light subpath starts or a camera subpath
+    // collects the emission (lights/medium_emitter.h).
+    bool is_medium_emitter() const {
+        return type == PathVertexType::Light && light && light->type() == LightType::Volume;
+    }
     bool is_delta_light() const {
         return type == PathVertexType::Light && light && caustica::is_delta_light(light->type());
     }
@@ -89,7 +106,8 @@ struct PathVertex {
 
     // The density pdf (solid angle at this vertex) expressed in the area measure at next:
     // times |cos| at next over the squared distance (Veach 1997, eq. 8.10); no cosine when next
-    // is not on a surface (a medium vertex, a point light, the lens).
+    // is not on a surface (a medium vertex, a point light, the lens); times the free-flight
+    // density when next is a medium emitter (volume measure, see above).
     float convert_density(float pdf, const PathVertex &next) const;
     // Area density with which this vertex, reached from prev (null for an endpoint), samples
     // next: the BSDF's, the phase function's or the camera's directional density, or the
@@ -98,7 +116,8 @@ struct PathVertex {
     // Area density at v of a ray emitted by this (light) vertex towards it.
     float pdf_light(const Scene &scene, const PathVertex &v) const;
     // Density with which a light subpath starts at this (light) vertex: light selection times
-    // the position density (area), or the directional density for lights at infinity.
+    // the position density (area, or volume in an emissive medium), or the directional density
+    // for lights at infinity.
     float pdf_light_origin(const Scene &scene, const PathVertex &v) const;
     // Radiance this (light) vertex emits towards v.
     SampledSpectrum Le(const Scene &scene, const PathVertex &v, const SampledWavelengths &lambda) const;

@@ -49,7 +49,10 @@ WalkEvent SubpathWalk::advance() {
             const PathSegment segment =
                 traverse_segment(medium_, absorbing_interior_, Ray{ray_.o, ray_.d / speed, Infinity, ray_.time},
                                  hit ? si_.t * speed : Infinity, lambda(), sampler_, spectral_mis_);
-            if (mode_ == TransportMode::Radiance) emitted_ += beta * segment.emitted;
+            if (mode_ == TransportMode::Radiance && segment.scattered) {
+                emitted_ += beta * segment.emitted;
+                emission_point_ = ray_.o + ray_.d * (segment.t / speed);
+            }
             beta *= segment.weight;
             if (segment.scattered && !beta.is_black()) {
                 differential_.reset();

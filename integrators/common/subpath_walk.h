@@ -98,9 +98,11 @@ class SubpathWalk {
     // Radiance subpaths: the emission of emissive media that the last advance() collected, times
     // the throughput (a collision estimator: counted where the medium scatters or absorbs the
     // path, so it is there even when advance() returned Ended because the collision absorbed).
-    // Zero for importance subpaths. No other strategy samples these emitters (media are not
-    // lights), so every integrator counts it in full.
+    // Zero for importance subpaths. bdpt weighs it against its light subpaths that start at the
+    // collision; the other integrators start none there and count it in full.
     const SampledSpectrum &emitted() const { return emitted_; }
+    // Where that emission was collected: the collision, which may also be the vertex reached.
+    Vec3f emission_point() const { return emission_point_; }
 
     // The vertex reached (after advance() returned Vertex). At a surface, hit() is the
     // intersection and vertex().bsdf may be null when the surface only emits.
@@ -159,6 +161,7 @@ class SubpathWalk {
     const Material *absorbing_interior_ = nullptr;
     SpectralMIS spectral_mis_;
     SampledSpectrum emitted_{0.f};
+    Vec3f emission_point_;
     SurfaceInteraction si_;
     ScatteringPoint point_;
     Vec3f previous_p_;

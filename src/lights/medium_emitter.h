@@ -1,9 +1,9 @@
 // An emissive medium as the start of light paths. A medium emits sigma_a Le per unit length and
-// solid angle, isotropically (pbrt-v4's convention); the integrators whose light reaches the image
-// only along light paths (lt, and sppm's photons) start some of their paths here, chosen with the
-// lights by power. Camera subpaths count the same emission by the collision estimator
-// (SubpathWalk::emitted), which pt, bdpt, vcm and bpm use alone: a medium emitter is never sampled
-// for next-event estimation (sample_li has nothing to offer, pdf_li is 0) and is not among
+// solid angle, isotropically (pbrt-v4's convention); lt, sppm's photons and bdpt's light
+// subpaths start some of their paths here, chosen with the lights by power. Camera subpaths count
+// the same emission by the collision estimator (SubpathWalk::emitted), which pt, vcm and bpm use
+// alone and bdpt weighs against its light subpaths: a medium emitter is never sampled for
+// next-event estimation (sample_li has nothing to offer, pdf_li is 0) and is not among
 // Scene::lights.
 //
 // Where a path starts: a heterogeneous medium draws the point by its emission over its majorant

@@ -7,6 +7,13 @@
 // tracing; the others: connections) must add up to one within 1e-4. The negative control: with
 // the light's emission density doubled where the light subpath holds it (as a walk whose
 // densities disagree with its sampling would have it), the sums are not one.
+//
+// The same holds when the light subpath starts inside an emissive medium (BdptMediumMis): x_0 is
+// then a point of a homogeneous glowing fog that fills the box and surrounds the camera, which
+// the camera subpath reaches by a free flight (s = 0 collects the emission there) and the light
+// subpath draws per unit volume; s = 1 joins the camera vertex to it. Negative control: the
+// light subpath's copy of x_0 with another extinction, so that the free-flight density that the
+// camera side's density at x_0 includes differs between the strategies.
 #include "core/error.h"
 #include "core/scratch_buffer.h"
 #include "integrators/bdpt/mis_weight.h"
@@ -20,6 +27,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace caustica {
@@ -45,6 +53,12 @@ AttributeBegin
 AttributeEnd
 )";
 
+// The box filled with a glowing fog that the camera sits in.
+const std::string kGlowBox = std::string(R"(MakeNamedMedium "glow" "string type" "homogeneous"
+  "rgb sigma_a" [ 0.3 0.3 0.3 ] "rgb sigma_s" [ 0.6 0.6 0.6 ] "rgb Le" [ 1 1 1 ]
+MediumInterface "" "glow"
+)") + kBox;
+
 // The points of one path: x[0] on the light, x[k] the lens; surfaces carry their intersection
 // and BSDF (the light's too, for the strategy that hits it).
 struct PathPoints {
@@ -60,6 +74,13 @@ class BdptMis : public ::testing::Test {
         set_warnings_enabled(false);
         scene_ = build_scene(parse_scene_string(kBox), RenderOverrides{});
         ASSERT_FALSE(scene_->lights.empty());
+    }
+
+    // The light subpaths start in the glowing fog (kGlowBox) rather than on the area light.
+    void start_in_the_fog() {
+        scene_ = build_scene(parse_scene_string(kGlowBox), RenderOverrides{});
+        ASSERT_EQ(scene_->medium_emitters.size(), 1u);
+        fog_emitter_ = scene_->medium_emitters[0].get();
     }
 
     // A random path of k segments, or empty when a ray leaves the box or lands on the light
@@ -90,6 +111,11 @@ class BdptMis : public ::testing::Test {
             if (dot(d, si.n) * dot(si.wo, si.n) < 0) d = -d;
             ray = si.spawn_ray(d);
         }
+        if (fog_emitter_) {
+            // x_0: a point of the fog inside the box.
+            path.si[0].p = {2 * unit(rng) - 1, 2 * unit(rng), 2 * unit(rng) - 1};
+            return path;
+        }
         // x_0: a point on the light, reached from x_1 by a ray so that its intersection (with the
         // area light) is known for the strategy that hits it.
         const Light &light = *scene_->lights[0];
@@ -110,6 +136,16 @@ class BdptMis : public ::testing::Test {
             v.type = PathVertexType::Camera;
             v.si.p = path.lens;
             v.medium = scene_->camera_medium;
+            return v;
+        }
+        if (i == 0 && fog_emitter_) {
+            // Where the light subpath starts, or where the camera subpath collects the emission.
+            v.type = PathVertexType::Light;
+            v.light = fog_emitter_;
+            v.medium = scene_->camera_medium;
+            v.si.p = path.si[0].p;
+            const MediumProperties mp = v.medium->properties(v.si.p, lambda_);
+            v.collision_sigma = (mp.sigma_a + mp.sigma_s).average() * (on_light_subpath ? fog_sigma_error_ : 1.f);
             return v;
         }
         v.si = path.si[i];
@@ -153,6 +189,8 @@ class BdptMis : public ::testing::Test {
     }
 
     std::unique_ptr<Scene> scene_;
+    const Light *fog_emitter_ = nullptr;
+    float fog_sigma_error_ = 1; // scales the light subpath's copy of the fog's extinction at x_0
     SampledWavelengths lambda_ = SampledWavelengths::fixed(550);
     ScratchBuffer scratch_;
 };
@@ -188,6 +226,45 @@ TEST_F(BdptMis, WrongEmissionDensityBreaksTheSum) {
         ++paths;
         double sum = 0;
         for (float w : weights(*path, 2.f)) sum += w;
+        broken += std::abs(sum - 1) > 1e-3;
+    }
+    EXPECT_EQ(paths, 200);
+    EXPECT_GT(broken, 100);
+}
+
+TEST_F(BdptMis, WeightsSumToOneForLightSubpathsFromAnEmissiveMedium) {
+    start_in_the_fog();
+    std::mt19937 rng(9);
+    int paths = 0, shared = 0;
+    for (int trial = 0; trial < 3000 && paths < 500; ++trial) {
+        const int k = 2 + trial % 5;
+        std::optional<PathPoints> path = random_path(rng, k);
+        if (!path) continue;
+        ++paths;
+        double sum = 0;
+        int contributing = 0;
+        for (float w : weights(*path)) {
+            sum += w;
+            contributing += w > 0.01f;
+        }
+        shared += contributing >= 2;
+        ASSERT_NEAR(sum, 1.0, 1e-4) << "path of " << k << " segments, trial " << trial;
+    }
+    EXPECT_EQ(paths, 500);
+    EXPECT_GT(shared, 250);
+}
+
+TEST_F(BdptMis, InconsistentFreeFlightDensityBreaksTheSum) {
+    start_in_the_fog();
+    fog_sigma_error_ = 2;
+    std::mt19937 rng(10);
+    int paths = 0, broken = 0;
+    for (int trial = 0; trial < 3000 && paths < 200; ++trial) {
+        std::optional<PathPoints> path = random_path(rng, 2 + trial % 5);
+        if (!path) continue;
+        ++paths;
+        double sum = 0;
+        for (float w : weights(*path)) sum += w;
         broken += std::abs(sum - 1) > 1e-3;
     }
     EXPECT_EQ(paths, 200);

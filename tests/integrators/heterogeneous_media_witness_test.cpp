@@ -10,7 +10,7 @@
 //   scattering medium lt's estimator has infinite variance, and bpm merges alone;
 // - emissive: a blackbody-emitting "uniformgrid" fireball (temperature and Lescale grids) and a
 //   "rgbgrid" glow with per-voxel "rgb Le", beside a dim lamp, lighting a floor and a wall, in all
-//   six integrators (lt and sppm start light paths in the media);
+//   six integrators (lt, sppm and bdpt start light paths in the media);
 // - plume-spot: a uniformgrid smoke plume with swirling filaments under a spot light, in pt, lt,
 //   bdpt, sppm and vcm. bpm is left out: at 1024 iterations its image mean moves by several
 //   percent between seeds (-1.0%, +3.3%, +4.7%, -0.2% against pbrt-v4), and one block of the
