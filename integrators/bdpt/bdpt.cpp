@@ -5,6 +5,7 @@
 #include "integrators/bdpt/mis_weight.h"
 #include "integrators/common/camera_importance.h"
 #include "integrators/common/light_path_start.h"
+#include "integrators/common/medium_emission.h"
 #include "integrators/common/path_tracing.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/profile_subsurface.h"
@@ -40,19 +41,6 @@ struct SubpathContext {
     PixelSampleContext &sample;
     float time; // of the camera ray, which the light subpath shares
 };
-
-// The emitter that stands for an emissive medium's light (null for a medium that emits none).
-const Light *medium_emitter_of(const Scene &scene, const Medium *medium) {
-    for (const LightPtr &emitter : scene.medium_emitters)
-        if (emitter->medium() == medium) return emitter.get();
-    return nullptr;
-}
-
-// The mean extinction over the wavelengths at a point of a medium (PathVertex::collision_sigma).
-float mean_extinction(const Medium &medium, Vec3f p, const SampledWavelengths &lambda) {
-    const MediumProperties mp = medium.properties(p, lambda);
-    return (mp.sigma_a + mp.sigma_s).average();
-}
 
 // The MIS weight of the emission that the camera subpath path[0, count) collected at a collision
 // in a medium (s = 0), against the light subpaths that start at that point: the collision is the
@@ -198,8 +186,7 @@ int camera_subpath(const SubpathContext &ctx, const CameraRay &camera_ray, PathV
 // scattering vertices.
 int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     const Scene &scene = ctx.scene;
-    const std::optional<LightPathStart> start = start_light_path(scene, ctx.sample.sampler, ctx.lambda, ctx.time,
-                                                                 LightPathSources::LightsAndEmissiveMedia);
+    const std::optional<LightPathStart> start = start_light_path(scene, ctx.sample.sampler, ctx.lambda, ctx.time);
     if (!start || max_count == 0) return 0;
     const Light &light = *start->light;
     const LightLeSample *les = &start->les;
@@ -215,7 +202,12 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     // Light paths start in the light's medium (for an area light, that on its shape's outside).
     origin.medium = light.medium();
     origin.beta = les->L / (start->pmf * les->pdf_pos);
-    origin.pdf_fwd = start->pmf * les->pdf_pos;
+    // With emissive media among the starts, a light's choice differs from next-event
+    // estimation's. The MIS weights take every start's density as pdf_light_origin gives it
+    // (next-event estimation's for a light), whichever strategy evaluates them, so that they
+    // sum to one; the throughput above has the actual density.
+    const float pmf = origin.is_medium_emitter() ? start->pmf : scene.light_sampler->pmf(&light);
+    origin.pdf_fwd = pmf * les->pdf_pos;
     if (origin.is_medium_emitter()) origin.collision_sigma = mean_extinction(*origin.medium, origin.p(), ctx.lambda);
 
     const Vec3f d = normalize(les->ray.d);

@@ -1,5 +1,5 @@
-// How every light subpath begins (lt, bdpt, sppm, bpm, vcm): a light chosen by power, a ray
-// emitted from it (Light::sample_le), and the flux that the ray carries.
+// How every light subpath begins (lt, bdpt, sppm, bpm, vcm): a light or an emissive medium chosen
+// by power, a ray emitted from it (Light::sample_le), and the flux that the ray carries.
 #pragma once
 
 #include "lights/light.h"
@@ -28,17 +28,13 @@ struct LightPathStart {
     }
 };
 
-// Where light paths may start: the lights alone, or also emissive media (lights/medium_emitter.h)
-// for the integrators whose camera paths do not count the media's emission in full (lt, sppm,
-// bdpt).
-enum class LightPathSources { Lights, LightsAndEmissiveMedia };
-
-// Draws the light (one sampler dimension) and its ray (two 2D dimensions, drawn even when no
-// light can be chosen, so that the dimensions after it do not depend on the outcome). Empty when
+// Draws the light or emissive medium (lights/medium_emitter.h), chosen by power (one sampler
+// dimension), and its ray (two 2D dimensions, drawn even when nothing can be chosen, so that the
+// dimensions after it do not depend on the outcome). Empty when
 // nothing is emitted, which includes a point drawn in an emissive medium's box that lies outside
 // the medium (beyond the interfaces that bound it). The ray leaves at `time` (geometry/ray.h):
 // that of the camera path the light path will be joined with.
 std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda,
-                                               float time, LightPathSources sources = LightPathSources::Lights);
+                                               float time);
 
 } // namespace caustica

@@ -1,6 +1,7 @@
 #include "integrators/common/path_vertex.h"
 
 #include "camera/camera.h"
+#include "integrators/common/medium_emission.h"
 #include "lights/light_sampler.h"
 #include "media/medium_interface.h"
 #include "scene/scene.h"
@@ -46,7 +47,7 @@ float PathVertex::convert_density(float pdf, const PathVertex &next) const {
     float dist2 = length_squared(w);
     if (dist2 == 0) return 0;
     if (next.on_surface()) pdf *= abs_dot(next.ng(), w / std::sqrt(dist2));
-    if (next.is_medium_emitter()) pdf *= next.collision_sigma * std::exp(-next.collision_sigma * std::sqrt(dist2));
+    if (next.is_medium_emitter()) pdf *= collision_density(next.collision_sigma, std::sqrt(dist2));
     return pdf / dist2;
 }
 
@@ -118,12 +119,10 @@ float PathVertex::pdf_light_origin(const Scene &scene, const PathVertex &v) cons
         return pdf;
     }
     const Light *light_here = emitter(*this);
+    if (light_here->type() == LightType::Volume) return medium_start_density(scene, *light_here, p());
     float pdf_pos, pdf_dir;
     light_here->pdf_le(Ray{p(), w, Infinity}, ng(), &pdf_pos, &pdf_dir);
-    // Emissive media are chosen among the lights and media together (light_path_start.h).
-    const LightSampler &sampler =
-        light_here->type() == LightType::Volume ? *scene.light_and_medium_sampler : *scene.light_sampler;
-    return sampler.pmf(light_here) * pdf_pos;
+    return scene.light_sampler->pmf(light_here) * pdf_pos;
 }
 
 SampledSpectrum PathVertex::Le(const Scene &scene, const PathVertex &v,

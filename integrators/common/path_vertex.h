@@ -16,12 +16,8 @@
 // estimator stays unbiased.
 //
 // The one exception is a point of an emissive medium where a light subpath starts (a "medium
-// emitter" vertex, is_medium_emitter). A light subpath draws it per unit volume, while a camera
-// subpath reaches it by a free flight, so the camera side's density there must include the
-// free flight's for the two to be compared. That density is not known in closed form in a
-// heterogeneous medium; convert_density uses that of a homogeneous medium with the point's
-// extinction, sigma e^(-sigma d). Every strategy uses the same function of the path, so the
-// weights still sum to one; the approximation only makes them less than optimal.
+// emitter" vertex, is_medium_emitter): the camera side's density there includes the free
+// flight's (integrators/common/medium_emission.h), which convert_density applies.
 #pragma once
 
 #include "geometry/interaction.h"

@@ -98,8 +98,8 @@ class SubpathWalk {
     // Radiance subpaths: the emission of emissive media that the last advance() collected, times
     // the throughput (a collision estimator: counted where the medium scatters or absorbs the
     // path, so it is there even when advance() returned Ended because the collision absorbed).
-    // Zero for importance subpaths. bdpt weighs it against its light subpaths that start at the
-    // collision; the other integrators start none there and count it in full.
+    // Zero for importance subpaths. bdpt, vcm and bpm weigh it against their light subpaths that
+    // start at the collision; pt and sppm count it in full.
     const SampledSpectrum &emitted() const { return emitted_; }
     // Where that emission was collected: the collision, which may also be the vertex reached.
     Vec3f emission_point() const { return emission_point_; }

@@ -110,8 +110,7 @@ void trace_light_path(const LightPathContext &ctx) {
     // The path's time within the shutter, drawn only when geometry moves (as camera paths do).
     const Shutter *shutter = scene.motion_shutter();
     const float time = shutter ? shutter->time(sampler.get_1d()) : 0.f;
-    const std::optional<LightPathStart> start =
-        start_light_path(scene, sampler, lambda, time, LightPathSources::LightsAndEmissiveMedia);
+    const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda, time);
     if (!start) return;
     // A path from an emissive medium starts at an event of the medium (where the path tracer's
     // collision estimator counts the emission), which counts towards max_depth as a scattering

@@ -313,8 +313,7 @@ void trace_camera_path(const Scene &scene, int max_depth, const CameraRay &camer
 void trace_photon(const Scene &scene, int max_depth, SampledWavelengths lambda, float time, IterationPixelContext &ctx,
                   SppmPhotonMap &surface_photons, SppmPhotonMap &medium_photons) {
     Sampler &sampler = ctx.sampler;
-    const std::optional<LightPathStart> start =
-        start_light_path(scene, sampler, lambda, time, LightPathSources::LightsAndEmissiveMedia);
+    const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda, time);
     if (!start) return;
     // Area lights' paths leave into the medium outside their shape (the side they emit to).
     SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.sample_scratch, ctx.rays, false);

@@ -33,6 +33,10 @@ struct LightVertex {
     // The exit of a jump through a profile solid (vcm_mis.h): connected, never merged at, and
     // the density of reaching its predecessor from it is the jump's, 1.
     bool after_jump = false;
+    // The start of a light path in an emissive medium (medium_emission.h): joined to camera
+    // vertices by its own strategy (beta is the emission over the start's density), never
+    // merged at, never joined to the lens; path_length 1, as it counts as a scattering event.
+    bool medium_start = false;
 };
 
 struct Photon {

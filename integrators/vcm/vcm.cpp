@@ -6,6 +6,7 @@
 #include "integrators/common/iteration_renderer.h"
 #include "integrators/common/merge_radius.h"
 #include "integrators/common/light_path_start.h"
+#include "integrators/common/medium_emission.h"
 #include "integrators/common/medium_photon.h"
 #include "integrators/common/path_vertex.h"
 #include "integrators/common/photon_search_parameter.h"
@@ -99,12 +100,12 @@ struct StoredPath {
 using VcmPhotonMap = PhotonMap<Photon>;
 
 // Adds the photons of one light path's vertices to its group's maps (none at the exit of a
-// jump, vcm_mis.h). A photon in a medium keeps its throughput over sigma_s at its own point
+// jump, vcm_mis.h, nor at a start in a medium). A photon in a medium keeps its throughput over sigma_s at its own point
 // (merge_in_medium says why).
 void add_photons(std::span<const LightVertex> path, const SampledWavelengths &lambda, VcmPhotonMap &surface_photons,
                  VcmPhotonMap &medium_photons) {
     for (const LightVertex &v : path) {
-        if (v.after_jump) continue;
+        if (v.after_jump || v.medium_start) continue;
         const ScatteringPoint &point = v.point;
         SampledSpectrum beta = v.beta;
         if (point.in_medium()) beta = over_sigma_s(beta, *point.medium, point.p, lambda);
@@ -208,17 +209,36 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
     const Light &light = *start->light;
     const LightLeSample &les = start->les;
 
+    // A start in an emissive medium is kept for the camera vertices to join (with connections
+    // on), and counts as a scattering event. The camera side's density there is per unit volume,
+    // its free flight's included: a factor known once the first vertex is (below), where a
+    // surface light has its cosine.
+    const bool medium_start = light.type() == LightType::Volume;
     const bool at_infinity = start->at_infinity();
-    SubpathMis m = SubpathMis::light_start(ctx.w, start->pmf * les.pdf_pos * les.pdf_dir,
-                                           start->pmf * (at_infinity ? les.pdf_dir : les.pdf_pos),
+    // With emissive media among the starts, a light's choice differs from next-event
+    // estimation's: the weights take next-event estimation's, as sample_light and the camera
+    // subpaths do, so that they sum to one (start->flux has the actual choice).
+    const float pmf = medium_start ? start->pmf : scene.light_sampler->pmf(&light);
+    SubpathMis m = SubpathMis::light_start(ctx.w, pmf * les.pdf_pos * les.pdf_dir,
+                                           pmf * (at_infinity ? les.pdf_dir : les.pdf_pos),
                                            at_infinity ? 1.f : start->cos_origin, !is_delta_light(light.type()));
+    int path_length = 0;
+    float start_sigma = 0;
+    if (medium_start) {
+        path_length = 1;
+        start_sigma = mean_extinction(*light.medium(), les.ray.o, lambda);
+        LightVertex v{ScatteringPoint::in_medium_along(Ray{les.ray.o, les.ray.d, Infinity, it.time}, 0, light.medium()),
+                      les.L / (start->pmf * les.pdf_pos), 0, 0, 0, 1, lambda.secondary_terminated()};
+        v.medium_start = true;
+        store.push_back(v);
+    }
 
     // The emitted flux is kept apart from the walk's throughput so that Russian roulette sees
     // the throughput on the path tracer's scale. The path leaves the light into the medium
     // around it (for an area light, the medium outside its shape, the side it emits to).
     SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.bsdf_memory, ctx.pixel.rays, true);
     walk.start(les.ray, light.medium(), SampledSpectrum(1.f));
-    int path_length = 0;
+    const int first_length = path_length + 1;
     while (walk.advance() == WalkEvent::Vertex) {
         const ScatteringPoint &point = walk.vertex();
         if (!point.in_medium() && !point.bsdf) {
@@ -227,7 +247,12 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
         }
         ++path_length;
         m.arrive(path_length > 1 || !at_infinity ? walk.distance_squared() : 1.f, point.cosine(point.wo));
-        if (path_length == 1 && light.type() == LightType::Infinite) {
+        if (medium_start && path_length == first_length) {
+            const float free_flight = mis(collision_density(start_sigma, std::sqrt(walk.distance_squared())));
+            m.d_vc *= free_flight;
+            m.d_vm *= free_flight;
+        }
+        if (path_length == first_length && light.type() == LightType::Infinite) {
             // light_start took next-event estimation's density of this direction to be the
             // emission's directional density, which it is for environment maps but not through a
             // portal, where it depends on the receiving point (only directions through the
@@ -370,6 +395,40 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
     return in_group_measure(L * T, ctx.lambda.secondary_terminated() || v.secondary_terminated, ctx.hero_scale);
 }
 
+// Joins a camera vertex to its light path's start in an emissive medium: the s = 1 strategy for
+// light that media emit, which next-event estimation does not sample. Weighed as sample_light
+// weighs a light point, against the camera subpath reaching the start by a free flight and
+// against the light subpaths that could have produced z; the start emits sigma_a Le towards
+// every direction, with no cosine.
+SampledSpectrum connect_to_medium_start(const CameraPathContext &ctx, const CameraVertex &z, const LightVertex &v) {
+    const Scene &scene = ctx.it.scene;
+    const ScatteringPoint &camera = z.point, &start = v.point;
+    Vec3f d = start.p - camera.p;
+    const float dist2 = length_squared(d);
+    if (dist2 == 0) return {};
+    d = d / std::sqrt(dist2);
+    const ScatteringPoint::Connection at_camera = camera.connect_towards(d, TransportMode::Radiance);
+    if (at_camera.f.is_black()) return {};
+    const Light &emitter = *medium_emitter_of(scene, start.medium);
+    const float start_pdf = medium_start_density(scene, emitter, start.p);
+    if (!(start_pdf > 0)) return {};
+    // Densities of the start per unit volume: the camera's free flight towards it, and the light
+    // path's emission of the segment to z (area measure at z) over the start's own density.
+    const float camera_pdf = at_camera.pdf_forward *
+                             collision_density(mean_extinction(*start.medium, start.p, ctx.lambda), std::sqrt(dist2)) /
+                             dist2;
+    const float w_light = mis(camera_pdf / start_pdf);
+    const float pdf_reverse = z.after_jump ? 1.f : at_camera.pdf_reverse;
+    const float w_camera =
+        z.m.connected(uniform_sphere_pdf() * camera.cosine(d) / dist2, pdf_reverse, ctx.w.at(camera.in_medium()));
+    SampledSpectrum L = at_camera.f * v.beta * (1 / (dist2 * (w_light + 1 + w_camera)));
+    if (L.is_black()) return {};
+    SampledSpectrum T = transmittance(scene, spawn_ray_between(camera, start.p, Vec3f{}, 0), camera.medium_towards(d),
+                                      ctx.lambda, ctx.pixel.rays);
+    if (T.is_black()) return {};
+    return in_group_measure(L * T, ctx.lambda.secondary_terminated() || v.secondary_terminated, ctx.hero_scale);
+}
+
 // Gathers the photons of the camera vertex's wavelength group within the merge radius on its
 // surface (tech. report eqs. 42-43), normalised by pi r^2 times the group's light-path count,
 // and by the surface's coverage: light paths land on a partly transparent cut-out only that
@@ -456,11 +515,25 @@ SampledSpectrum complete_at(const CameraPathContext &ctx, const CameraVertex &z)
         for (uint32_t i = 0; i < light_path.count; ++i) {
             const LightVertex &v = (*light_path.vertices)[light_path.begin + i];
             if (v.path_length + z.path_length > ctx.it.max_depth) break;
-            L += connect(ctx, z, v);
+            L += v.medium_start ? connect_to_medium_start(ctx, z, v) : connect(ctx, z, v);
         }
     }
     L += z.point.in_medium() ? merge_in_medium(ctx, z) : merge_on_surface(ctx, z);
     return L;
+}
+
+// The MIS weight of the emission that a camera subpath, in state m after its last vertex,
+// collected at a collision in an emissive medium: the collision is reached as a vertex whose
+// density per unit volume includes the free flight's (medium_emission.h), and a light subpath
+// starts there with the emitter's start density, emitting uniformly over the sphere (eq. 44).
+float medium_emission_weight(const Scene &scene, const VcmWeights &w, SubpathMis m, const SubpathWalk &walk) {
+    const Light *emitter = medium_emitter_of(scene, walk.medium());
+    if (!emitter) return 1;
+    const Vec3f p = walk.emission_point();
+    const float dist2 = length_squared(p - walk.origin());
+    m.arrive(dist2, collision_density(mean_extinction(*walk.medium(), p, walk.lambda()), std::sqrt(dist2)));
+    const float start_pdf = medium_start_density(scene, *emitter, p);
+    return 1 / (1 + m.hit_emitter(w, start_pdf, start_pdf * uniform_sphere_pdf()));
 }
 
 // Radiance of the camera subpath of one pixel (tech. report section 5), in the measure of its
@@ -492,10 +565,12 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
     };
     while (true) {
         const WalkEvent event = walk.advance();
-        // Emissive media along the segment: no light subpath starts in them, so the camera
-        // subpath's collision estimate is the only strategy and counts in full.
-        if (path_length < it.max_depth)
-            L += in_group_measure(walk.emitted(), lambda.secondary_terminated(), ctx.hero_scale);
+        // Emissive media along the segment: the camera subpath's collision estimate, weighed
+        // against the light subpaths that start at the collision (with the lens point as the
+        // previous vertex, as for a light that the camera sees directly, it is the only strategy).
+        if (path_length < it.max_depth && !walk.emitted().is_black())
+            L += in_group_measure(walk.emitted(), lambda.secondary_terminated(), ctx.hero_scale) *
+                 (path_length == 0 ? 1.f : medium_emission_weight(scene, w, m, walk));
         if (event == WalkEvent::Ended) break;
         if (event == WalkEvent::Escaped) {
             // Environment light: the camera path's own strategy, against next-event estimation

@@ -19,6 +19,9 @@
 // become photons of their own maps, which camera vertices in media gather within a sphere of
 // radius r (volumetric photon mapping, Jensen and Christensen 1998), weighted against the other
 // strategies as in Krivanek et al. 2014 (see vcm_mis.h and merge_in_medium in vcm.cpp).
+// Emissive media are light sources too: light paths start in them, chosen with the lights by
+// power, camera vertices are joined to such a start, and the camera paths' collision estimate of
+// their emission is weighed against both (integrators/common/medium_emission.h, docs/media.md).
 //
 // Spectral: pixels are split into wavelength groups per iteration (wavelength_groups.h); light
 // and camera subpaths that are connected or merged always share the group's wavelengths. A

@@ -23,6 +23,11 @@
 // vertex along a segment, so photons are not kept at light subpaths' exits: x_j (the light's
 // entry, the camera's exit) can be merged at, x_j+1 cannot. Every other strategy counts.
 //
+// A light subpath that starts inside an emissive medium (integrators/common/medium_emission.h)
+// starts as a light does, with cos_light 1: the camera side's density of the start has the free
+// flight's density where a light has its cosine, a factor known once the first vertex is, which
+// the caller then applies to d_vc and d_vm.
+//
 // Connections can be switched off (bpm has none; vcm has both families): their terms are then
 // removed from every sum, so the remaining weights still sum to one.
 #pragma once

@@ -1,10 +1,10 @@
 // An emissive medium as the start of light paths. A medium emits sigma_a Le per unit length and
-// solid angle, isotropically (pbrt-v4's convention); lt, sppm's photons and bdpt's light
-// subpaths start some of their paths here, chosen with the lights by power. Camera subpaths count
-// the same emission by the collision estimator (SubpathWalk::emitted), which pt, vcm and bpm use
-// alone and bdpt weighs against its light subpaths: a medium emitter is never sampled for
-// next-event estimation (sample_li has nothing to offer, pdf_li is 0) and is not among
-// Scene::lights.
+// solid angle, isotropically (pbrt-v4's convention); the light paths of lt, sppm, bdpt, vcm and
+// bpm start some of their paths here, chosen with the lights by power. Camera subpaths count the
+// same emission by the collision estimator (SubpathWalk::emitted), which pt and sppm use alone
+// and bdpt, vcm and bpm weigh against their light subpaths (integrators/common/medium_emission.h):
+// a medium emitter is never sampled for next-event estimation (sample_li has nothing to offer,
+// pdf_li is 0) and is not among Scene::lights.
 //
 // Where a path starts: a heterogeneous medium draws the point by its emission over its majorant
 // cells (heterogeneous_medium.h); a homogeneous medium has no bounds of its own and is sampled

@@ -19,9 +19,14 @@
 //   - a merge at non-specular x_j: prod_{i<=j} p_fwd(i) prod_{i>=j} p_rev(i) times eta_j, the kernel's
 //     region times N (pi r^2 N on a surface, 4/3 pi r^3 N in a medium).
 // Specular deltas appear once in every remaining strategy's density and cancel. The power
-// heuristic weight of strategy j is p_j^2 / sum_i p_i^2. The recursion of vcm_mis.h must give
+// heuristic weight of strategy j is p_j^2 / sum_i p_i^2.
+// A light path may also start inside an emissive medium (integrators/common/medium_emission.h):
+// x_0 then has no surface, its emission is uniform over the sphere, s = 1 joins x_1 to it, and
+// the camera side's density of x_0 has the free flight's sigma e^(-sigma d) where a light's
+// has its cosine. The recursion of vcm_mis.h must give
 // the same weights, and so weights that sum to one, for vcm and, without connections, for bpm.
 // Wrong recursions fail (the negative controls at the end).
+#include "integrators/common/medium_emission.h"
 #include "integrators/vcm/vcm_mis.h"
 
 #include "core/vecmath.h"
@@ -30,6 +35,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace caustica {
@@ -49,6 +55,8 @@ struct SyntheticPath {
     float camera_pdf = 0;           // the camera's directional density times the frame's pixels
     float light_paths = 0;          // N
     float radius = 0;
+    float start_sigma = 0;          // > 0: x_0 lies in an emissive medium of this extinction
+    bool light_side_drops_free_flight = false; // a negative control (see the end)
 
     int k() const { return int(x.size()) - 1; }
     float dist2(int i, int j) const { return length_squared(x[i].p - x[j].p); }
@@ -56,12 +64,18 @@ struct SyntheticPath {
     float cosine(int i, int j) const {
         return x[i].in_medium() ? 1.f : abs_dot(x[i].n, normalize(x[j].p - x[i].p));
     }
+    bool medium_start() const { return start_sigma > 0; }
+    // What converts the camera side's density of x_0 to its measure: the cosine at a light, the
+    // free flight's density in a medium.
+    float start_factor() const {
+        return medium_start() ? collision_density(start_sigma, std::sqrt(dist2(0, 1))) : cosine(0, 1);
+    }
     float eta(int j) const {
         return light_paths * (x[j].in_medium() ? 4.f / 3.f * Pi * radius * radius * radius : Pi * radius * radius);
     }
 };
 
-SyntheticPath random_path(std::mt19937 &rng, int k) {
+SyntheticPath random_path(std::mt19937 &rng, int k, bool medium_start = false) {
     std::uniform_real_distribution<float> unit(0.f, 1.f);
     auto random_direction = [&] {
         const float z = 1 - 2 * unit(rng), phi = 2 * Pi * unit(rng), r = std::sqrt(std::max(0.f, 1 - z * z));
@@ -84,6 +98,11 @@ SyntheticPath random_path(std::mt19937 &rng, int k) {
     path.camera_pdf = 100 + 1000 * unit(rng);
     path.light_paths = 1000 + 5000 * unit(rng);
     path.radius = 0.005f + 0.05f * unit(rng);
+    if (medium_start) {
+        path.x[0].n = Vec3f{};
+        path.emission_pdf_dir = Inv4Pi;
+        path.start_sigma = 0.05f + 3 * unit(rng);
+    }
     return path;
 }
 
@@ -106,7 +125,8 @@ std::vector<Strategy> strategies(const SyntheticPath &path, const VcmWeights &w,
     for (int i = 2; i <= k; ++i) p_fwd[i] = x[i - 1].fwd * path.cosine(i, i - 1) / path.dist2(i - 1, i);
     p_rev[k] = 1;
     if (k >= 1) p_rev[k - 1] = path.camera_pdf * path.cosine(k - 1, k) / path.dist2(k - 1, k);
-    for (int i = k - 2; i >= 0; --i) p_rev[i] = x[i + 1].rev * path.cosine(i, i + 1) / path.dist2(i, i + 1);
+    for (int i = k - 2; i >= 0; --i)
+        p_rev[i] = x[i + 1].rev * (i == 0 ? path.start_factor() : path.cosine(i, i + 1)) / path.dist2(i, i + 1);
     auto product = [&](int light_end, int camera_start) { // prod_{i<=light_end} p_fwd prod_{i>=camera_start}^{k-1} p_rev
         double p = 1;
         for (int i = 0; i <= light_end; ++i) p *= p_fwd[i];
@@ -117,15 +137,20 @@ std::vector<Strategy> strategies(const SyntheticPath &path, const VcmWeights &w,
     // The recursion along both subpaths, as trace_light_path and trace_camera_path run it.
     const float emission_pdf = path.light_choice_pdf_pos * path.emission_pdf_dir;
     std::vector<SubpathMis> light(k + 1), camera(k + 1);
-    SubpathMis m = SubpathMis::light_start(w, emission_pdf, path.light_choice_pdf_pos, path.cosine(0, 1), true);
+    SubpathMis m = SubpathMis::light_start(w, emission_pdf, path.light_choice_pdf_pos,
+                                           path.medium_start() ? 1.f : path.cosine(0, 1), true);
     for (int i = 1; i < k; ++i) {
         m.arrive(path.dist2(i - 1, i), path.cosine(i, i - 1));
+        if (i == 1 && path.medium_start() && !path.light_side_drops_free_flight) {
+            m.d_vc *= mis(path.start_factor());
+            m.d_vm *= mis(path.start_factor());
+        }
         light[i] = m;
         m.scatter(w, w.at(x[i].in_medium()), path.cosine(i, i + 1), x[i].fwd, x[i].rev, x[i].specular);
     }
     m = SubpathMis::camera_start(path.light_paths, path.camera_pdf);
     for (int i = k - 1; i >= 0; --i) {
-        m.arrive(path.dist2(i + 1, i), path.cosine(i, i + 1));
+        m.arrive(path.dist2(i + 1, i), i == 0 ? path.start_factor() : path.cosine(i, i + 1));
         camera[i] = m;
         if (i > 0) m.scatter(w, w.at(x[i].in_medium()), path.cosine(i, i - 1), x[i].rev, x[i].fwd, x[i].specular);
     }
@@ -137,7 +162,14 @@ std::vector<Strategy> strategies(const SyntheticPath &path, const VcmWeights &w,
     for (int s = 1; s <= k && use_vc; ++s) {
         const int y = s - 1, z = s; // the light subpath's end and the camera subpath's
         if (x[y].specular || (z < k && x[z].specular)) continue;
-        if (s == 1) {
+        if (s == 1 && path.medium_start()) {
+            // x_1 joined to the start in the medium (connect_to_medium_start).
+            const float camera_pdf = x[1].rev * path.start_factor() / path.dist2(0, 1);
+            const float w_light = mis(camera_pdf / path.light_choice_pdf_pos);
+            const float w_camera = camera[1].connected(path.emission_pdf_dir * path.cosine(1, 0) / path.dist2(0, 1),
+                                                       x[1].fwd, w.at(x[1].in_medium()));
+            out.push_back({"medium start", s, product(0, 1), 1 / (w_light + 1 + w_camera)});
+        } else if (s == 1) {
             // Light sampling from x_1, with the light's density as a solid angle there.
             const float direct = path.light_choice_pdf_pos * path.dist2(0, 1) / path.cosine(0, 1);
             const float w_light = mis(x[1].rev / direct);
@@ -195,11 +227,11 @@ Discrepancy check(const SyntheticPath &path, const VcmWeights &w, bool use_vc) {
     return d;
 }
 
-void expect_weights_match(bool use_vc) {
+void expect_weights_match(bool use_vc, bool medium_start = false) {
     std::mt19937 rng(use_vc ? 1234 : 4321);
     int paths = 0;
     for (int trial = 0; trial < 4000; ++trial) {
-        const SyntheticPath path = random_path(rng, 2 + trial % 6);
+        const SyntheticPath path = random_path(rng, 2 + trial % 6, medium_start);
         const Discrepancy d = check(path, weights_for(path, use_vc), use_vc);
         ASSERT_LT(d.sum, 1e-4) << "path length " << path.k() << ", trial " << trial;
         ASSERT_LT(d.weight, 1e-3) << "path length " << path.k() << ", trial " << trial;
@@ -212,10 +244,17 @@ TEST(VcmMis, RecursiveWeightsAreThePowerHeuristicOfTheExplicitDensities) { expec
 
 TEST(VcmMis, BpmWeightsWithoutConnectionsAreThePowerHeuristicToo) { expect_weights_match(false); }
 
+TEST(VcmMis, WeightsOfLightPathsFromAnEmissiveMediumAreThePowerHeuristic) {
+    expect_weights_match(true, true);
+    expect_weights_match(false, true);
+}
+
 // Negative controls. Weighing merges in media as if they were on surfaces (the volume kernel's
 // eta and the rescaling of d_vm dropped) is still a partition of unity, but not the power
 // heuristic of the true densities: the comparison with the explicit weights catches it. Leaving
 // the camera's hit on the light out of d_vm (light_hit_weight zero) breaks the partition itself.
+// For a start in a medium, leaving the free flight's density out of the light subpath's sums
+// (as if the start had a cosine of 1) breaks it too.
 TEST(VcmMis, WrongWeightsFail) {
     std::mt19937 rng(99);
     int medium_as_surface = 0, hit_left_out = 0, with_medium = 0;
@@ -236,6 +275,14 @@ TEST(VcmMis, WrongWeightsFail) {
     EXPECT_GT(with_medium, 100);
     EXPECT_GT(medium_as_surface, with_medium / 2);
     EXPECT_GT(hit_left_out, 100);
+
+    int free_flight_left_out = 0;
+    for (int trial = 0; trial < 500; ++trial) {
+        SyntheticPath path = random_path(rng, 4, true);
+        path.light_side_drops_free_flight = true;
+        free_flight_left_out += check(path, weights_for(path, true), true).sum > 1e-3;
+    }
+    EXPECT_GT(free_flight_left_out, 250);
 }
 
 } // namespace
