@@ -188,6 +188,50 @@ class BdptMis : public ::testing::Test {
         return w;
     }
 
+    // Every strategy's weight for up to `count` random paths; the sum over the strategies of
+    // each path and the number of strategies that carry more than 1% of it are handed to
+    // `check`. Returns the number of paths.
+    template <typename Check>
+    int for_random_paths(uint32_t seed, int count, float emission_error, Check check) {
+        std::mt19937 rng(seed);
+        int paths = 0;
+        for (int trial = 0; trial < 3000 && paths < count; ++trial) {
+            const int k = 2 + trial % 5;
+            std::optional<PathPoints> path = random_path(rng, k);
+            if (!path) continue;
+            ++paths;
+            double sum = 0;
+            int contributing = 0;
+            for (float w : weights(*path, emission_error)) {
+                sum += w;
+                contributing += w > 0.01f;
+            }
+            check(sum, contributing, k, trial);
+        }
+        return paths;
+    }
+
+    // The weights sum to one for 500 paths, most of which are shared by two strategies or more
+    // (not a trivial partition).
+    void expect_partition(uint32_t seed) {
+        int shared = 0;
+        const int paths = for_random_paths(seed, 500, 1, [&](double sum, int contributing, int k, int trial) {
+            shared += contributing >= 2;
+            ASSERT_NEAR(sum, 1.0, 1e-4) << "path of " << k << " segments, trial " << trial;
+        });
+        EXPECT_EQ(paths, 500);
+        EXPECT_GT(shared, 250);
+    }
+
+    // Paths of 200 whose sum is not one.
+    int broken_sums(uint32_t seed, float emission_error) {
+        int broken = 0;
+        const int paths = for_random_paths(seed, 200, emission_error,
+                                           [&](double sum, int, int, int) { broken += std::abs(sum - 1) > 1e-3; });
+        EXPECT_EQ(paths, 200);
+        return broken;
+    }
+
     std::unique_ptr<Scene> scene_;
     const Light *fog_emitter_ = nullptr;
     float fog_sigma_error_ = 1; // scales the light subpath's copy of the fog's extinction at x_0
@@ -195,80 +239,19 @@ class BdptMis : public ::testing::Test {
     ScratchBuffer scratch_;
 };
 
-TEST_F(BdptMis, WeightsOfAllStrategiesSumToOne) {
-    std::mt19937 rng(7);
-    int paths = 0, shared = 0;
-    for (int trial = 0; trial < 3000 && paths < 500; ++trial) {
-        const int k = 2 + trial % 5;
-        std::optional<PathPoints> path = random_path(rng, k);
-        if (!path) continue;
-        ++paths;
-        double sum = 0;
-        int contributing = 0;
-        for (float w : weights(*path)) {
-            sum += w;
-            contributing += w > 0.01f;
-        }
-        shared += contributing >= 2;
-        ASSERT_NEAR(sum, 1.0, 1e-4) << "path of " << k << " segments, trial " << trial;
-    }
-    EXPECT_EQ(paths, 500);
-    // Not a trivial partition: most paths are shared by two strategies or more.
-    EXPECT_GT(shared, 250);
-}
+TEST_F(BdptMis, WeightsOfAllStrategiesSumToOne) { expect_partition(7); }
 
-TEST_F(BdptMis, WrongEmissionDensityBreaksTheSum) {
-    std::mt19937 rng(8);
-    int paths = 0, broken = 0;
-    for (int trial = 0; trial < 3000 && paths < 200; ++trial) {
-        std::optional<PathPoints> path = random_path(rng, 2 + trial % 5);
-        if (!path) continue;
-        ++paths;
-        double sum = 0;
-        for (float w : weights(*path, 2.f)) sum += w;
-        broken += std::abs(sum - 1) > 1e-3;
-    }
-    EXPECT_EQ(paths, 200);
-    EXPECT_GT(broken, 100);
-}
+TEST_F(BdptMis, WrongEmissionDensityBreaksTheSum) { EXPECT_GT(broken_sums(8, 2.f), 100); }
 
 TEST_F(BdptMis, WeightsSumToOneForLightSubpathsFromAnEmissiveMedium) {
     start_in_the_fog();
-    std::mt19937 rng(9);
-    int paths = 0, shared = 0;
-    for (int trial = 0; trial < 3000 && paths < 500; ++trial) {
-        const int k = 2 + trial % 5;
-        std::optional<PathPoints> path = random_path(rng, k);
-        if (!path) continue;
-        ++paths;
-        double sum = 0;
-        int contributing = 0;
-        for (float w : weights(*path)) {
-            sum += w;
-            contributing += w > 0.01f;
-        }
-        shared += contributing >= 2;
-        ASSERT_NEAR(sum, 1.0, 1e-4) << "path of " << k << " segments, trial " << trial;
-    }
-    EXPECT_EQ(paths, 500);
-    EXPECT_GT(shared, 250);
+    expect_partition(9);
 }
 
 TEST_F(BdptMis, InconsistentFreeFlightDensityBreaksTheSum) {
     start_in_the_fog();
     fog_sigma_error_ = 2;
-    std::mt19937 rng(10);
-    int paths = 0, broken = 0;
-    for (int trial = 0; trial < 3000 && paths < 200; ++trial) {
-        std::optional<PathPoints> path = random_path(rng, 2 + trial % 5);
-        if (!path) continue;
-        ++paths;
-        double sum = 0;
-        for (float w : weights(*path)) sum += w;
-        broken += std::abs(sum - 1) > 1e-3;
-    }
-    EXPECT_EQ(paths, 200);
-    EXPECT_GT(broken, 100);
+    EXPECT_GT(broken_sums(10, 1.f), 100);
 }
 
 } // namespace
