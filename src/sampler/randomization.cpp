@@ -12,15 +12,6 @@ std::optional<Randomization> parse_randomization(const std::string &name) {
     return std::nullopt;
 }
 
-uint32_t reverse_bits(uint32_t v) {
-    v = (v << 16) | (v >> 16);
-    v = ((v & 0x00ff00ffu) << 8) | ((v & 0xff00ff00u) >> 8);
-    v = ((v & 0x0f0f0f0fu) << 4) | ((v & 0xf0f0f0f0u) >> 4);
-    v = ((v & 0x33333333u) << 2) | ((v & 0xccccccccu) >> 2);
-    v = ((v & 0x55555555u) << 1) | ((v & 0xaaaaaaaau) >> 1);
-    return v;
-}
-
 uint32_t owen_scramble(uint32_t bits, uint64_t seed) {
     // Digit k (k = 0 is the most significant) belongs to the tree node reached by digits
     // 0..k-1, and each node needs its own fair coin. A node is numbered by its digits below a
@@ -44,7 +35,12 @@ uint32_t owen_scramble(uint32_t bits, uint64_t seed) {
     return bits ^ flips;
 }
 
-uint32_t fast_owen_scramble(uint32_t bits, uint64_t seed) {
+FastOwenKeys fast_owen_keys(uint64_t seed) {
+    const uint64_t key0 = mix_bits(seed), key1 = mix_bits(key0);
+    return {uint32_t(key0), uint32_t(key0 >> 32) | 1u, uint32_t(key1), uint32_t(key1 >> 32) | 1u};
+}
+
+uint32_t fast_owen_scramble(uint32_t bits, const FastOwenKeys &keys) {
     // After bit reversal the most significant digit is bit 0, and the nested structure asks
     // that output bit i be input bit i xor a function of bits 0..i-1 only. Adding a constant,
     // multiplying by an odd constant and x ^= x * (even constant) all have that form (carries
@@ -55,13 +51,12 @@ uint32_t fast_owen_scramble(uint32_t bits, uint64_t seed) {
     // uncorrelated at every later digit to within the sampling noise, as exact Owen
     // scrambling's are; with fixed multipliers only and the seed merely added, they were not
     // (correlation 0.26 between the coins of digit 2 for values parting at digit 0).
-    const uint64_t key0 = mix_bits(seed), key1 = mix_bits(key0);
     uint32_t x = reverse_bits(bits);
-    x += uint32_t(key0);
-    x *= uint32_t(key0 >> 32) | 1u;
+    x += keys.add0;
+    x *= keys.multiply0;
     x ^= x * 0x85ebca6au;
-    x += uint32_t(key1);
-    x *= uint32_t(key1 >> 32) | 1u;
+    x += keys.add1;
+    x *= keys.multiply1;
     x ^= x * 0xc2b2ae36u;
     x ^= x * 0x27d4eb2eu;
     return reverse_bits(x);

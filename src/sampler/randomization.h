@@ -29,10 +29,25 @@ enum class Randomization { None, PermuteDigits, FastOwen, Owen };
 // pbrt's names: "none", "permutedigits", "fastowen", "owen"; nullopt for anything else.
 std::optional<Randomization> parse_randomization(const std::string &name);
 
-uint32_t reverse_bits(uint32_t v);
+inline uint32_t reverse_bits(uint32_t v) {
+    v = (v << 16) | (v >> 16);
+    v = ((v & 0x00ff00ffu) << 8) | ((v & 0xff00ff00u) >> 8);
+    v = ((v & 0x0f0f0f0fu) << 4) | ((v & 0xf0f0f0f0u) >> 4);
+    v = ((v & 0x33333333u) << 2) | ((v & 0xccccccccu) >> 2);
+    v = ((v & 0x55555555u) << 1) | ((v & 0xaaaaaaaau) >> 1);
+    return v;
+}
 
 uint32_t owen_scramble(uint32_t bits, uint64_t seed);
-uint32_t fast_owen_scramble(uint32_t bits, uint64_t seed);
+
+// The constants that a seed gives the fast Owen scramble, which a sampler can keep for every value
+// it scrambles with that seed.
+struct FastOwenKeys {
+    uint32_t add0, multiply0, add1, multiply1;
+};
+FastOwenKeys fast_owen_keys(uint64_t seed);
+uint32_t fast_owen_scramble(uint32_t bits, const FastOwenKeys &keys);
+inline uint32_t fast_owen_scramble(uint32_t bits, uint64_t seed) { return fast_owen_scramble(bits, fast_owen_keys(seed)); }
 uint32_t randomize(uint32_t bits, Randomization randomization, uint64_t seed);
 
 // A 32-bit binary fraction as a float in [0, 1). The value is truncated to float's 24-bit

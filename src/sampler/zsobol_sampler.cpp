@@ -35,9 +35,27 @@ void ZSobolSampler::start_pixel_sample(Vec2i pixel, int sample_index, int dimens
         cached_round_seed_ = round_seed_;
         cached_dimensions_ = 0;
     }
+    if (round_seed_ != keys_round_seed_) {
+        keys_round_seed_ = round_seed_;
+        cached_keys_ = 0;
+    }
 }
 
-uint64_t ZSobolSampler::shuffled_index(uint64_t dimension_key) {
+ZSobolSampler::DimensionKeys &ZSobolSampler::dimension_keys() {
+    const bool cacheable = dimension_ < uint64_t(CachedDimensions);
+    DimensionKeys &k = cacheable ? keys_[dimension_] : uncached_keys_;
+    if (cacheable && ((cached_keys_ >> dimension_) & 1)) return k;
+    k.key = dimension_key();
+    k.block = ~uint64_t(0);
+    if (randomization_ == Randomization::FastOwen) {
+        k.x = fast_owen_keys(k.key + 1);
+        k.y = fast_owen_keys(k.key + 2);
+    }
+    if (cacheable) cached_keys_ |= uint64_t(1) << dimension_;
+    return k;
+}
+
+uint64_t ZSobolSampler::shuffled_index(DimensionKeys &keys) {
     // The index has MortonBits + k bits: each Morton level is one base-4 digit, then come the
     // digits of the sample index (for odd k the last is a single bit, permuted by a coin). The
     // Morton digits' permutation depends on nothing below them, so it is computed once per
@@ -49,13 +67,22 @@ uint64_t ZSobolSampler::shuffled_index(uint64_t dimension_key) {
     if (cacheable && ((cached_dimensions_ >> dimension_) & 1)) {
         morton = uint64_t(shuffled_morton_[dimension_]) << log2_samples_;
     } else {
-        morton = shuffle_digits(pixel_index_, marked, bits, log2_samples_, dimension_key);
+        // The digits above a 16 x 16 block of pixels (a whole number of digit pairs, so that
+        // the two parts are shuffled as one call would shuffle them) are shared by its pixels,
+        // which the renderer visits together.
+        const int block_low = log2_samples_ + 8;
+        const uint64_t block = marked >> block_low;
+        if (block != keys.block) {
+            keys.block = block;
+            keys.shuffled_above_block = shuffle_digits(pixel_index_, marked, bits, block_low, keys.key);
+        }
+        morton = keys.shuffled_above_block | shuffle_digits(pixel_index_, marked, block_low, log2_samples_, keys.key);
         if (cacheable) {
             shuffled_morton_[dimension_] = uint32_t(morton >> log2_samples_);
             cached_dimensions_ |= uint64_t(1) << dimension_;
         }
     }
-    return morton | shuffle_digits(pixel_index_, marked, log2_samples_, 0, dimension_key);
+    return morton | shuffle_digits(pixel_index_, marked, log2_samples_, 0, keys.key);
 }
 
 // The keys of a dimension (pair): one for the index permutation, and the scramble seeds of
@@ -65,22 +92,21 @@ uint64_t ZSobolSampler::dimension_key() const {
 }
 
 float ZSobolSampler::get_1d() {
-    const uint64_t key = dimension_key();
-    const uint64_t index = shuffled_index(key);
+    DimensionKeys &k = dimension_keys();
+    const uint64_t index = shuffled_index(k);
     ++dimension_;
     // Dimension 0 of the Sobol sequence: the index's bits in reverse order.
     const uint32_t bits = reverse_bits(uint32_t(index));
-    return bits_to_unit_float(randomize(bits, randomization_, key + 1));
+    return bits_to_unit_float(scramble(bits, k.x, k.key + 1));
 }
 
 Vec2f ZSobolSampler::get_2d() {
-    const uint64_t key = dimension_key();
-    const uint64_t index = shuffled_index(key);
+    DimensionKeys &k = dimension_keys();
+    const uint64_t index = shuffled_index(k);
     dimension_ += 2;
     const uint32_t x = reverse_bits(uint32_t(index));
     const uint32_t y = sobol_second_dimension(index);
-    return {bits_to_unit_float(randomize(x, randomization_, key + 1)),
-            bits_to_unit_float(randomize(y, randomization_, key + 2))};
+    return {bits_to_unit_float(scramble(x, k.x, k.key + 1)), bits_to_unit_float(scramble(y, k.y, k.key + 2))};
 }
 
 std::unique_ptr<Sampler> ZSobolSampler::clone() const { return std::make_unique<ZSobolSampler>(*this); }

@@ -46,10 +46,25 @@ class ZSobolSampler final : public Sampler {
     std::unique_ptr<Sampler> clone() const override;
 
   private:
+    // The keys of the current dimension (pair): that of its index permutation and scramble, and
+    // for fastowen its coordinates' scramble constants, which depend on the round alone.
+    struct DimensionKeys {
+        uint64_t key;
+        FastOwenKeys x, y;
+        // The permuted Morton digits above the last 16 x 16 block of pixels seen (block: the
+        // index above that block's digits, ~0 for none), which the block's pixels share.
+        uint64_t block = ~uint64_t(0);
+        uint64_t shuffled_above_block = 0;
+    };
+    DimensionKeys &dimension_keys();
+    uint32_t scramble(uint32_t bits, const FastOwenKeys &fast, uint64_t seed) const {
+        return randomization_ == Randomization::FastOwen ? fast_owen_scramble(bits, fast)
+                                                         : randomize(bits, randomization_, seed);
+    }
     uint64_t dimension_key() const;
-    // The sequence index of the current sample for the current dimension (pair), whose key
-    // is given.
-    uint64_t shuffled_index(uint64_t dimension_key);
+    // The sequence index of the current sample for the current dimension (pair), whose keys
+    // are given.
+    uint64_t shuffled_index(DimensionKeys &keys);
 
     static constexpr int CachedDimensions = 64;
 
@@ -66,6 +81,12 @@ class ZSobolSampler final : public Sampler {
     uint64_t cached_round_seed_ = 0;
     uint64_t cached_dimensions_ = 0;
     std::array<uint32_t, CachedDimensions> shuffled_morton_{};
+    // Dimensions 0..63's keys for the round of keys_round_seed_ (bit d of cached_keys_ set: entry
+    // d is valid); a dimension past them has its keys made afresh in uncached_keys_.
+    std::array<DimensionKeys, CachedDimensions> keys_{};
+    uint64_t cached_keys_ = 0;
+    uint64_t keys_round_seed_ = 0;
+    DimensionKeys uncached_keys_{};
 };
 
 } // namespace caustica
