@@ -30,28 +30,33 @@ void ZSobolSampler::start_pixel_sample(Vec2i pixel, int sample_index, int dimens
     pixel_index_ = (uint64_t(morton) << log2_samples_) | in_round;
     round_seed_ = hash_values(seed_, round);
     dimension_ = uint64_t(dimension);
-    if (morton != cached_morton_ || round_seed_ != cached_round_seed_) {
+    // The caches hold the 64 dimensions from the multiple of 64 where this sample starts: a
+    // camera path's from 0, a light path's from its own offset (vcm's 4096).
+    const uint64_t base = dimension_ & ~uint64_t(CachedDimensions - 1);
+    if (morton != cached_morton_ || round_seed_ != cached_round_seed_ || base != cache_base_) {
         cached_morton_ = morton;
         cached_round_seed_ = round_seed_;
         cached_dimensions_ = 0;
     }
-    if (round_seed_ != keys_round_seed_) {
+    if (round_seed_ != keys_round_seed_ || base != cache_base_) {
         keys_round_seed_ = round_seed_;
         cached_keys_ = 0;
     }
+    cache_base_ = base;
 }
 
 ZSobolSampler::DimensionKeys &ZSobolSampler::dimension_keys() {
-    const bool cacheable = dimension_ < uint64_t(CachedDimensions);
-    DimensionKeys &k = cacheable ? keys_[dimension_] : uncached_keys_;
-    if (cacheable && ((cached_keys_ >> dimension_) & 1)) return k;
+    const uint64_t slot = dimension_ - cache_base_;
+    const bool cacheable = slot < uint64_t(CachedDimensions);
+    DimensionKeys &k = cacheable ? keys_[slot] : uncached_keys_;
+    if (cacheable && ((cached_keys_ >> slot) & 1)) return k;
     k.key = dimension_key();
     k.block = ~uint64_t(0);
     if (randomization_ == Randomization::FastOwen) {
         k.x = fast_owen_keys(k.key + 1);
         k.y = fast_owen_keys(k.key + 2);
     }
-    if (cacheable) cached_keys_ |= uint64_t(1) << dimension_;
+    if (cacheable) cached_keys_ |= uint64_t(1) << slot;
     return k;
 }
 
@@ -63,9 +68,10 @@ uint64_t ZSobolSampler::shuffled_index(DimensionKeys &keys) {
     const int bits = MortonBits + log2_samples_;
     const uint64_t marked = pixel_index_ | (uint64_t(1) << bits);
     uint64_t morton;
-    const bool cacheable = dimension_ < uint64_t(CachedDimensions);
-    if (cacheable && ((cached_dimensions_ >> dimension_) & 1)) {
-        morton = uint64_t(shuffled_morton_[dimension_]) << log2_samples_;
+    const uint64_t slot = dimension_ - cache_base_;
+    const bool cacheable = slot < uint64_t(CachedDimensions);
+    if (cacheable && ((cached_dimensions_ >> slot) & 1)) {
+        morton = uint64_t(shuffled_morton_[slot]) << log2_samples_;
     } else {
         // The digits above a 16 x 16 block of pixels (a whole number of digit pairs, so that
         // the two parts are shuffled as one call would shuffle them) are shared by its pixels,
@@ -78,8 +84,8 @@ uint64_t ZSobolSampler::shuffled_index(DimensionKeys &keys) {
         }
         morton = keys.shuffled_above_block | shuffle_digits(pixel_index_, marked, block_low, log2_samples_, keys.key);
         if (cacheable) {
-            shuffled_morton_[dimension_] = uint32_t(morton >> log2_samples_);
-            cached_dimensions_ |= uint64_t(1) << dimension_;
+            shuffled_morton_[slot] = uint32_t(morton >> log2_samples_);
+            cached_dimensions_ |= uint64_t(1) << slot;
         }
     }
     return morton | shuffle_digits(pixel_index_, marked, log2_samples_, 0, keys.key);

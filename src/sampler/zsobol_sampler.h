@@ -75,18 +75,20 @@ class ZSobolSampler final : public Sampler {
     uint64_t pixel_index_ = 0;  // Morton code of the pixel, then the sample within the round
     uint64_t round_seed_ = 0;
     uint64_t dimension_ = 0;
-    // The permuted Morton digits of dimensions 0..63 for one pixel and round (bit d of
-    // cached_dimensions_ set: entry d is valid), since a pixel's samples share them.
+    // The caches below hold dimensions cache_base_ .. cache_base_ + 63 (slot d: dimension
+    // cache_base_ + d). The permuted Morton digits for one pixel and round (bit d of
+    // cached_dimensions_ set: slot d is valid), since a pixel's samples share them.
     uint32_t cached_morton_ = 0;
     uint64_t cached_round_seed_ = 0;
     uint64_t cached_dimensions_ = 0;
     std::array<uint32_t, CachedDimensions> shuffled_morton_{};
-    // Dimensions 0..63's keys for the round of keys_round_seed_ (bit d of cached_keys_ set: entry
-    // d is valid); a dimension past them has its keys made afresh in uncached_keys_.
+    // The dimensions' keys for the round of keys_round_seed_ (bit d of cached_keys_ set: slot d
+    // is valid); a dimension outside the slots has its keys made afresh in uncached_keys_.
     std::array<DimensionKeys, CachedDimensions> keys_{};
     uint64_t cached_keys_ = 0;
     uint64_t keys_round_seed_ = 0;
     DimensionKeys uncached_keys_{};
+    uint64_t cache_base_ = 0;
 };
 
 } // namespace caustica
