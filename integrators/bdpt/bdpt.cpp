@@ -337,15 +337,16 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
 // Strategy s = 1 for light that an emissive medium emits: next-event estimation samples lights
 // alone, so the camera vertex is joined to the light subpath's start when that lies in a medium:
 // the emission sigma_a Le, the same towards every direction, over the start's density.
-SampledSpectrum connect_to_medium_start(const SubpathContext &ctx, PathVertex *light_vertices, PathVertex *camera_vertices,
-                                        int t) {
+SampledSpectrum connect_to_medium_start(const SubpathContext &ctx, PathVertex *light_vertices,
+                                        PathVertex *camera_vertices, int t) {
     const PathVertex &start = light_vertices[0], &pt = camera_vertices[t - 1];
     if (!pt.connectible()) return SampledSpectrum(0.f);
     Vec3f d = pt.p() - start.p();
     const float dist2 = length_squared(d);
     if (dist2 == 0) return SampledSpectrum(0.f);
     d = d / std::sqrt(dist2);
-    SampledSpectrum L = start.beta * pt.f(-d, TransportMode::Radiance) * (pt.cosine(-d, TransportMode::Radiance) / dist2) * pt.beta;
+    SampledSpectrum L = start.beta * pt.f(-d, TransportMode::Radiance) *
+                        (pt.cosine(-d, TransportMode::Radiance) / dist2) * pt.beta;
     if (L.is_black()) return L;
     L *= connection_transmittance(ctx, start, pt);
     if (L.is_black()) return L;

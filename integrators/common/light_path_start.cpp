@@ -29,7 +29,8 @@ const Medium *medium_at(const Scene &scene, Vec3f p, float time) {
 
 std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda,
                                                float time) {
-    const LightSampler &lights = scene.light_and_medium_sampler ? *scene.light_and_medium_sampler : *scene.light_sampler;
+    const LightSampler &lights =
+        scene.light_and_medium_sampler ? *scene.light_and_medium_sampler : *scene.light_sampler;
     auto chosen = lights.sample(sampler.get_1d());
     const Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
     if (!chosen) return std::nullopt;

@@ -100,8 +100,8 @@ struct StoredPath {
 using VcmPhotonMap = PhotonMap<Photon>;
 
 // Adds the photons of one light path's vertices to its group's maps (none at the exit of a
-// jump, vcm_mis.h, nor at a start in a medium). A photon in a medium keeps its throughput over sigma_s at its own point
-// (merge_in_medium says why).
+// jump, vcm_mis.h, nor at a start in a medium). A photon in a medium keeps its throughput over
+// sigma_s at its own point (merge_in_medium says why).
 void add_photons(std::span<const LightVertex> path, const SampledWavelengths &lambda, VcmPhotonMap &surface_photons,
                  VcmPhotonMap &medium_photons) {
     for (const LightVertex &v : path) {

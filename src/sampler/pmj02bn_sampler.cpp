@@ -34,7 +34,8 @@ float blue_noise(Vec2i pixel, uint64_t instance) {
     const uint64_t key = hash_values(instance, 0x626c7565ULL);
     const uint64_t scrambled = shuffle_digits(morton, morton | (1u << Bits), Bits, 0, key);
     uint32_t reversed = 0;
-    for (int digit = 0; digit < Bits / 2; ++digit) reversed = (reversed << 2) | uint32_t((scrambled >> (2 * digit)) & 3);
+    for (int digit = 0; digit < Bits / 2; ++digit)
+        reversed = (reversed << 2) | uint32_t((scrambled >> (2 * digit)) & 3);
     return std::min(OneMinusEpsilon, (float(reversed) + sample_hash_uniform(key, morton)) * 0x1p-16f);
 }
 

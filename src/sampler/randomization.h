@@ -47,7 +47,9 @@ struct FastOwenKeys {
 };
 FastOwenKeys fast_owen_keys(uint64_t seed);
 uint32_t fast_owen_scramble(uint32_t bits, const FastOwenKeys &keys);
-inline uint32_t fast_owen_scramble(uint32_t bits, uint64_t seed) { return fast_owen_scramble(bits, fast_owen_keys(seed)); }
+inline uint32_t fast_owen_scramble(uint32_t bits, uint64_t seed) {
+    return fast_owen_scramble(bits, fast_owen_keys(seed));
+}
 uint32_t randomize(uint32_t bits, Randomization randomization, uint64_t seed);
 
 // A 32-bit binary fraction as a float in [0, 1). The value is truncated to float's 24-bit

@@ -210,8 +210,10 @@ TEST(Pmj02bnSampler, IntegratesSmoothFunctionsFarBetterThanIndependentSamples) {
     Pmj02bnSampler pmj(n, 1);
     IndependentSampler independent(n, 1);
     for (int dimension : {3, 5, 20}) {
-        const double bump_ratio = mse(pmj, bump, bump_integral, dimension) / mse(independent, bump, bump_integral, dimension);
-        const double square_ratio = mse(pmj, square, 7.0 / 6.0, dimension) / mse(independent, square, 7.0 / 6.0, dimension);
+        const double bump_ratio =
+            mse(pmj, bump, bump_integral, dimension) / mse(independent, bump, bump_integral, dimension);
+        const double square_ratio =
+            mse(pmj, square, 7.0 / 6.0, dimension) / mse(independent, square, 7.0 / 6.0, dimension);
         EXPECT_LT(bump_ratio, 0.02) << dimension;
         EXPECT_LT(square_ratio, 0.05) << dimension;
     }
