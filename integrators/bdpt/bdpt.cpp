@@ -202,12 +202,7 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
     // Light paths start in the light's medium (for an area light, that on its shape's outside).
     origin.medium = light.medium();
     origin.beta = les->L / (start->pmf * les->pdf_pos);
-    // With emissive media among the starts, a light's choice differs from next-event
-    // estimation's. The MIS weights take every start's density as pdf_light_origin gives it
-    // (next-event estimation's for a light), whichever strategy evaluates them, so that they
-    // sum to one; the throughput above has the actual density.
-    const float pmf = origin.is_medium_emitter() ? start->pmf : scene.light_sampler->pmf(&light);
-    origin.pdf_fwd = pmf * les->pdf_pos;
+    origin.pdf_fwd = start->pmf * les->pdf_pos;
     if (origin.is_medium_emitter()) origin.collision_sigma = mean_extinction(*origin.medium, origin.p(), ctx.lambda);
 
     const Vec3f d = normalize(les->ray.d);
@@ -290,10 +285,10 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         // Sample a point on a light from the camera subpath's end (next-event estimation).
         const PathVertex &pt = camera_vertices[t - 1];
         if (!pt.connectible()) return c;
-        auto chosen = scene.light_sampler->sample(sampler.get_1d());
+        const LightSampleContext lctx{pt.p(), pt.ng(), pt.ns()};
+        auto chosen = scene.light_sampler->sample(lctx, sampler.get_1d());
         Vec2f u = sampler.get_2d();
         if (!chosen) return c;
-        const LightSampleContext lctx{pt.p(), pt.ng(), pt.ns()};
         auto ls = chosen->light->sample_li(lctx, u, ctx.lambda);
         if (!ls || ls->L.is_black() || !(ls->pdf > 0)) return c;
         sampled = PathVertex{};

@@ -66,6 +66,22 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
     ScopedAssign<float> qs_minus_rev(qs_minus ? &qs_minus->pdf_rev : nullptr,
                                      qs_minus ? qs->pdf(scene, pt, *qs_minus) : 0.f);
 
+    // The light point x_0 has the light subpath's density (its choice of the light by power) in
+    // every strategy but next-event estimation (s = 1 from a camera vertex, t >= 2), which
+    // chooses the light by x_1's position: that strategy's density is the others' times
+    // nee_factor, squared for the power heuristic.
+    const PathVertex &x0 = s > 0 ? light_vertices[0] : *pt;
+    const PathVertex *x1 = s > 1 ? &light_vertices[1] : s == 1 ? pt : pt_minus;
+    float nee_factor = 1;
+    if (x1 && x0.is_light()) {
+        const float light_subpath = x0.pdf_light_origin(scene, *x1);
+        if (light_subpath > 0)
+            nee_factor = sqr(x0.pdf_light_origin(scene, *x1, PathVertex::LightChoice::NextEvent) / light_subpath);
+    }
+    const int k = s + t; // the strategies (s', t') of this path have s' + t' = k
+    auto factor = [&](int s_other) { return s_other == 1 && k - s_other >= 2 ? nee_factor : 1.f; };
+    const float this_factor = factor(s);
+
     // Walking from the connection towards the camera, r_i is the ratio of the density of the
     // strategy that has the light subpath reach camera vertex i to that of this strategy
     // (Veach 1997, eq. 10.9), squared for the power heuristic. A strategy is counted only if
@@ -79,7 +95,7 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
         bool lens_connection_impossible = i == 1 && camera_vertices[1].at_infinity;
         if (!camera_vertices[i].delta && !camera_vertices[i - 1].delta && !lens_connection_impossible &&
             !camera_vertices[i].after_jump)
-            sum_ratios += ratio;
+            sum_ratios += ratio * (factor(k - i) / this_factor);
     }
     // And towards the light: the camera subpath reaching light vertex i. Reaching the light
     // vertex itself (i = 0) is impossible for delta lights.
@@ -87,7 +103,8 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
     for (int i = s - 1; i >= 0; --i) {
         ratio *= sqr(remap0(light_vertices[i].pdf_rev) / remap0(light_vertices[i].pdf_fwd));
         bool delta_before = i > 0 ? light_vertices[i - 1].delta : light_vertices[0].is_delta_light();
-        if (!light_vertices[i].delta && !delta_before && !light_vertices[i].after_jump) sum_ratios += ratio;
+        if (!light_vertices[i].delta && !delta_before && !light_vertices[i].after_jump)
+            sum_ratios += ratio * (factor(i) / this_factor);
     }
     return 1 / (1 + sum_ratios);
 }

@@ -25,13 +25,16 @@ const Medium *medium_at(const Scene &scene, Vec3f p, float time) {
     return nullptr;
 }
 
+// Light subpaths choose among the lights and the emissive media by power.
+const LightSampler &light_path_sampler(const Scene &scene) {
+    return scene.light_and_medium_sampler ? *scene.light_and_medium_sampler : *scene.light_sampler;
+}
+
 } // namespace
 
 std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda,
                                                float time) {
-    const LightSampler &lights =
-        scene.light_and_medium_sampler ? *scene.light_and_medium_sampler : *scene.light_sampler;
-    auto chosen = lights.sample(sampler.get_1d());
+    auto chosen = light_path_sampler(scene).sample(sampler.get_1d());
     const Vec2f u_position = sampler.get_2d(), u_direction = sampler.get_2d();
     if (!chosen) return std::nullopt;
     auto les = chosen->light->sample_le(u_position, u_direction, lambda);
@@ -44,5 +47,7 @@ std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &samp
     start.flux = les->L * (start.cos_origin / (chosen->pmf * les->pdf_pos * les->pdf_dir));
     return start;
 }
+
+float light_path_start_pmf(const Scene &scene, const Light &light) { return light_path_sampler(scene).pmf(&light); }
 
 } // namespace caustica

@@ -37,4 +37,9 @@ struct LightPathStart {
 std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &sampler, const SampledWavelengths &lambda,
                                                float time);
 
+// The probability that start_light_path chooses `light` (a light or an emissive medium). A light
+// subpath's throughput has it; MIS weights also take next-event estimation's choice of a light
+// for the strategies that sample it (bdpt and vcm).
+float light_path_start_pmf(const Scene &scene, const Light &light);
+
 } // namespace caustica

@@ -1,6 +1,6 @@
 #include "integrators/common/medium_emission.h"
 
-#include "lights/light_sampler.h"
+#include "integrators/common/light_path_start.h"
 #include "media/medium.h"
 #include "scene/scene.h"
 
@@ -20,7 +20,7 @@ const Light *medium_emitter_of(const Scene &scene, const Medium *medium) {
 float medium_start_density(const Scene &scene, const Light &emitter, Vec3f p) {
     float pdf_pos, pdf_dir;
     emitter.pdf_le(Ray{p, Vec3f{0, 0, 1}, Infinity}, Vec3f{}, &pdf_pos, &pdf_dir);
-    return scene.light_and_medium_sampler->pmf(&emitter) * pdf_pos;
+    return light_path_start_pmf(scene, emitter) * pdf_pos;
 }
 
 } // namespace caustica

@@ -111,10 +111,13 @@ struct PathVertex {
     float pdf(const Scene &scene, const PathVertex *prev, const PathVertex &next) const;
     // Area density at v of a ray emitted by this (light) vertex towards it.
     float pdf_light(const Scene &scene, const PathVertex &v) const;
-    // Density with which a light subpath starts at this (light) vertex: light selection times
-    // the position density (area, or volume in an emissive medium), or the directional density
-    // for lights at infinity.
-    float pdf_light_origin(const Scene &scene, const PathVertex &v) const;
+    // Density of this (light) vertex as the start of a path whose next vertex is v: the light's
+    // choice times the position density (area, or volume in an emissive medium), or the
+    // directional density for lights at infinity. A light subpath chooses the light by power
+    // over the lights and emissive media; next-event estimation by v's position.
+    enum class LightChoice { LightSubpath, NextEvent };
+    float pdf_light_origin(const Scene &scene, const PathVertex &v,
+                           LightChoice choice = LightChoice::LightSubpath) const;
     // Radiance this (light) vertex emits towards v.
     SampledSpectrum Le(const Scene &scene, const PathVertex &v, const SampledWavelengths &lambda) const;
 };

@@ -198,6 +198,29 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
     scene.film->add_splat(cs->p_raster, L * T, lambda);
 }
 
+// The light subpath's weights at its start (tech. report eqs. 31-33), set once its first vertex
+// is reached. Each strategy's density of the start has its own choice of the light: the light
+// subpath's is by power over the lights and emissive media (start.pmf), next-event estimation's
+// by position from the vertex it receives light at (SpatialLightSampler), here the first vertex,
+// which also sets an environment light's directional density through a portal. A start in an
+// emissive medium, which next-event estimation does not sample, has the light subpath's choice
+// for both (connect_to_medium_start joins camera vertices to it).
+SubpathMis light_start_mis(const Scene &scene, const VcmWeights &w, const LightPathStart &start,
+                           const ScatteringPoint &first) {
+    const Light &light = *start.light;
+    const LightLeSample &les = start.les;
+    const LightSampleContext receiver{first.p, first.ng, first.ns};
+    float direct_pdf = start.pmf * les.pdf_pos;
+    if (light.type() == LightType::Infinite)
+        direct_pdf = scene.light_sampler->pmf(receiver, &light) * light.pdf_li(receiver, -les.ray.d);
+    else if (light.type() == LightType::DeltaDirection)
+        direct_pdf = scene.light_sampler->pmf(receiver, &light) * les.pdf_dir;
+    else if (light.type() != LightType::Volume)
+        direct_pdf = scene.light_sampler->pmf(receiver, &light) * les.pdf_pos;
+    return SubpathMis::light_start(w, start.pmf * les.pdf_pos * les.pdf_dir, direct_pdf,
+                                   start.at_infinity() ? 1.f : start.cos_origin, !is_delta_light(light.type()));
+}
+
 // Traces the light subpath of one pixel with its group's wavelengths, appending its
 // non-specular vertices to `store` and splatting their connections to the lens.
 void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, std::vector<LightVertex> &store) {
@@ -214,14 +237,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
     // its free flight's included: a factor known once the first vertex is (below), where a
     // surface light has its cosine.
     const bool medium_start = light.type() == LightType::Volume;
-    const bool at_infinity = start->at_infinity();
-    // With emissive media among the starts, a light's choice differs from next-event
-    // estimation's: the weights take next-event estimation's, as sample_light and the camera
-    // subpaths do, so that they sum to one (start->flux has the actual choice).
-    const float pmf = medium_start ? start->pmf : scene.light_sampler->pmf(&light);
-    SubpathMis m = SubpathMis::light_start(ctx.w, pmf * les.pdf_pos * les.pdf_dir,
-                                           pmf * (at_infinity ? les.pdf_dir : les.pdf_pos),
-                                           at_infinity ? 1.f : start->cos_origin, !is_delta_light(light.type()));
+    SubpathMis m; // set at the first vertex (light_start_mis)
     int path_length = 0;
     float start_sigma = 0;
     if (medium_start) {
@@ -246,19 +262,13 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
             continue;
         }
         ++path_length;
-        m.arrive(path_length > 1 || !at_infinity ? walk.distance_squared() : 1.f, point.cosine(point.wo));
-        if (medium_start && path_length == first_length) {
+        const bool first = path_length == first_length;
+        if (first) m = light_start_mis(scene, ctx.w, *start, point);
+        m.arrive(first && start->at_infinity() ? 1.f : walk.distance_squared(), point.cosine(point.wo));
+        if (medium_start && first) {
             const float free_flight = mis(collision_density(start_sigma, std::sqrt(walk.distance_squared())));
             m.d_vc *= free_flight;
             m.d_vm *= free_flight;
-        }
-        if (path_length == first_length && light.type() == LightType::Infinite) {
-            // light_start took next-event estimation's density of this direction to be the
-            // emission's directional density, which it is for environment maps but not through a
-            // portal, where it depends on the receiving point (only directions through the
-            // portal from it are sampled): the first vertex is that point.
-            const float direct_pdf = light.pdf_li(LightSampleContext{point.p, point.ng, point.ns}, -les.ray.d);
-            m.d_vcm *= mis(direct_pdf / les.pdf_dir);
         }
         // The vertex, then the exit of a profile solid that its sampled direction enters.
         while (true) {
@@ -333,11 +343,12 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
     const Scene &scene = ctx.it.scene;
     const ScatteringPoint &point = z.point;
     Sampler &sampler = ctx.pixel.sampler;
-    auto chosen = scene.light_sampler->sample(sampler.get_1d());
+    const LightSampleContext receiver{point.p, point.ng, point.ns};
+    auto chosen = scene.light_sampler->sample(receiver, sampler.get_1d());
     Vec2f u = sampler.get_2d();
     if (!chosen) return {};
     const Light &light = *chosen->light;
-    auto ls = light.sample_li(LightSampleContext{point.p, point.ng, point.ns}, u, ctx.lambda);
+    auto ls = light.sample_li(receiver, u, ctx.lambda);
     if (!ls || ls->L.is_black() || !(ls->pdf > 0)) return {};
     const ScatteringPoint::Connection scattering = point.connect_towards(ls->wi, TransportMode::Radiance);
     if (scattering.f.is_black()) return {};
@@ -347,13 +358,13 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
     const float cos_at_light = ls->n_light == Vec3f{} ? 1.f : abs_dot(ls->n_light, ls->wi);
     if (cos_at_light == 0) return {};
     EmissionDensities e = emission_densities(light, ls->p_light, ls->n_light, -ls->wi);
-    // The next-event density that the other strategies' weights assume (see trace_light_path),
+    // The next-event density that the other strategies' weights assume (see light_start_mis),
     // as a solid angle at z.
     float assumed_direct_pdf = chosen->pmf;
     if (light.type() == LightType::Area) assumed_direct_pdf *= e.pdf_pos * dist2 / cos_at_light;
     else if (light.type() == LightType::DeltaPosition) assumed_direct_pdf *= dist2;
     else if (light.type() == LightType::Infinite) assumed_direct_pdf *= ls->pdf;
-    const float emission_pdf = chosen->pmf * e.pdf_pos * e.pdf_dir;
+    const float emission_pdf = light_path_start_pmf(scene, light) * e.pdf_pos * e.pdf_dir;
     const float w_light = is_delta_light(light.type()) ? 0.f : mis(scattering.pdf_forward / assumed_direct_pdf);
     const float pdf_reverse = z.after_jump ? 1.f : scattering.pdf_reverse;
     const float w_camera = z.m.connected(emission_pdf * point.cosine(ls->wi) / (assumed_direct_pdf * cos_at_light),
@@ -583,10 +594,10 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                     continue;
                 }
                 const Vec3f wi = normalize(walk.ray().d);
-                const float pmf = scene.light_sampler->pmf(light);
                 EmissionDensities e = emission_densities(*light, walk.origin(), Vec3f{}, -wi);
-                const float direct_pdf = pmf * light->pdf_li(previous, wi);
-                const float w_camera = m.hit_emitter(w, direct_pdf, pmf * e.pdf_pos * e.pdf_dir);
+                const float direct_pdf = scene.light_sampler->pmf(previous, light) * light->pdf_li(previous, wi);
+                const float emission_pdf = light_path_start_pmf(scene, *light) * e.pdf_pos * e.pdf_dir;
+                const float w_camera = m.hit_emitter(w, direct_pdf, emission_pdf);
                 add(Le / (1 + w_camera));
             }
             break;
@@ -602,9 +613,10 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                 if (path_length == 1) {
                     add(Le);
                 } else {
-                    const float pmf = scene.light_sampler->pmf(si.area_light);
                     EmissionDensities e = emission_densities(*si.area_light, si.p, si.n, si.wo);
-                    const float w_camera = m.hit_emitter(w, pmf * e.pdf_pos, pmf * e.pdf_pos * e.pdf_dir);
+                    const float direct_pdf = scene.light_sampler->pmf(previous, si.area_light) * e.pdf_pos;
+                    const float emission_pdf = light_path_start_pmf(scene, *si.area_light) * e.pdf_pos * e.pdf_dir;
+                    const float w_camera = m.hit_emitter(w, direct_pdf, emission_pdf);
                     add(Le / (1 + w_camera));
                 }
             }

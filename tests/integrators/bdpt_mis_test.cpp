@@ -8,6 +8,11 @@
 // the light's emission density doubled where the light subpath holds it (as a walk whose
 // densities disagree with its sampling would have it), the sums are not one.
 //
+// With two lights, next-event estimation chooses between them by the receiving point's position
+// (SpatialLightSampler) and the light subpaths by power, so x_0 has one density in the s = 1
+// strategy and another in those with s >= 2; mis_weight takes each strategy's own. The negative
+// control gives the light subpath's origin next-event estimation's choice instead.
+//
 // The same holds when the light subpath starts inside an emissive medium (BdptMediumMis): x_0 is
 // then a point of a homogeneous glowing fog that fills the box and surrounds the camera, which
 // the camera subpath reaches by a free flight (s = 0 collects the emission there) and the light
@@ -53,6 +58,16 @@ AttributeBegin
 AttributeEnd
 )";
 
+// The box with a second light, a small bright one low on a wall: next-event estimation's choice
+// between the two lights then depends on the receiving point (SpatialLightSampler), and differs
+// from the light subpaths' choice by power.
+const std::string kTwoLightBox = std::string(kBox) + R"(AttributeBegin
+  AreaLightSource "diffuse" "rgb L" [ 500 500 500 ]
+  Shape "bilinearmesh" "point3 P" [ -0.99 0.2 -0.05   -0.99 0.3 -0.05   -0.99 0.2 0.05   -0.99 0.3 0.05 ]
+    "normal N" [ 1 0 0  1 0 0  1 0 0  1 0 0 ]
+AttributeEnd
+)";
+
 // The box filled with a glowing fog that the camera sits in.
 const std::string kGlowBox = std::string(R"(MakeNamedMedium "glow" "string type" "homogeneous"
   "rgb sigma_a" [ 0.3 0.3 0.3 ] "rgb sigma_s" [ 0.6 0.6 0.6 ] "rgb Le" [ 1 1 1 ]
@@ -74,6 +89,11 @@ class BdptMis : public ::testing::Test {
         set_warnings_enabled(false);
         scene_ = build_scene(parse_scene_string(kBox), RenderOverrides{});
         ASSERT_FALSE(scene_->lights.empty());
+    }
+
+    void add_a_second_light() {
+        scene_ = build_scene(parse_scene_string(kTwoLightBox), RenderOverrides{});
+        ASSERT_GE(scene_->lights.size(), 2u);
     }
 
     // The light subpaths start in the glowing fog (kGlowBox) rather than on the area light.
@@ -118,7 +138,7 @@ class BdptMis : public ::testing::Test {
         }
         // x_0: a point on the light, reached from x_1 by a ray so that its intersection (with the
         // area light) is known for the strategy that hits it.
-        const Light &light = *scene_->lights[0];
+        const Light &light = *scene_->lights[rng() % scene_->lights.size()];
         std::optional<LightLiSample> ls =
             light.sample_li(LightSampleContext{path.si[1].p, path.si[1].n, path.si[1].shading.n},
                             Vec2f{unit(rng), unit(rng)}, lambda_);
@@ -173,7 +193,12 @@ class BdptMis : public ::testing::Test {
             // Forward densities along each subpath, and reverse ones (the other subpath's
             // direction) as the walks set them; mis_weight sets those of the joined ends.
             for (int j = 0; j < s; ++j) {
-                if (j == 0) light[0].pdf_fwd = light[0].pdf_light_origin(*scene_, j + 1 < s ? light[1] : camera[t - 1]);
+                if (j == 0) {
+                    const auto choice = origin_by_next_event_ && s >= 2 ? PathVertex::LightChoice::NextEvent
+                                                                        : PathVertex::LightChoice::LightSubpath;
+                    light[0].pdf_fwd =
+                        light[0].pdf_light_origin(*scene_, j + 1 < s ? light[1] : camera[t - 1], choice);
+                }
                 else if (j == 1) light[1].pdf_fwd = light[0].pdf_light(*scene_, light[1]) * emission_error;
                 else light[j].pdf_fwd = light[j - 1].pdf(*scene_, &light[j - 2], light[j]);
                 if (j + 2 < s) light[j].pdf_rev = light[j + 1].pdf(*scene_, &light[j + 2], light[j]);
@@ -234,6 +259,9 @@ class BdptMis : public ::testing::Test {
 
     std::unique_ptr<Scene> scene_;
     const Light *fog_emitter_ = nullptr;
+    // A negative control: the light subpath's origin takes next-event estimation's choice of the
+    // light rather than its own.
+    bool origin_by_next_event_ = false;
     float fog_sigma_error_ = 1; // scales the light subpath's copy of the fog's extinction at x_0
     SampledWavelengths lambda_ = SampledWavelengths::fixed(550);
     ScratchBuffer scratch_;
@@ -242,6 +270,17 @@ class BdptMis : public ::testing::Test {
 TEST_F(BdptMis, WeightsOfAllStrategiesSumToOne) { expect_partition(7); }
 
 TEST_F(BdptMis, WrongEmissionDensityBreaksTheSum) { EXPECT_GT(broken_sums(8, 2.f), 100); }
+
+TEST_F(BdptMis, WeightsSumToOneWhenNextEventEstimationChoosesLightsByPosition) {
+    add_a_second_light();
+    expect_partition(11);
+}
+
+TEST_F(BdptMis, NextEventEstimationsChoiceOnTheLightSubpathBreaksTheSum) {
+    add_a_second_light();
+    origin_by_next_event_ = true;
+    EXPECT_GT(broken_sums(12, 1.f), 20); // 34 of 200 paths
+}
 
 TEST_F(BdptMis, WeightsSumToOneForLightSubpathsFromAnEmissiveMedium) {
     start_in_the_fog();
