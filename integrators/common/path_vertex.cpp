@@ -130,6 +130,18 @@ float PathVertex::pdf_light_origin(const Scene &scene, const PathVertex &v, Ligh
     return pmf(*light_here) * pdf_pos;
 }
 
+float PathVertex::next_event_ratio(const Scene &scene, const PathVertex &v) const {
+    if (at_infinity) {
+        const float light_subpath = pdf_light_origin(scene, v);
+        return light_subpath > 0 ? pdf_light_origin(scene, v, LightChoice::NextEvent) / light_subpath : 1.f;
+    }
+    const Light &light = *emitter(*this);
+    if (light.type() == LightType::Volume) return 1;
+    const float light_subpath = light_path_start_pmf(scene, light);
+    return light_subpath > 0 ? scene.light_sampler->pmf(LightSampleContext{v.p(), v.ng(), v.ns()}, &light) / light_subpath
+                             : 1.f;
+}
+
 SampledSpectrum PathVertex::Le(const Scene &scene, const PathVertex &v,
                                const SampledWavelengths &lambda) const {
     if (!is_light()) return SampledSpectrum(0.f);

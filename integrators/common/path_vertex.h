@@ -118,6 +118,9 @@ struct PathVertex {
     enum class LightChoice { LightSubpath, NextEvent };
     float pdf_light_origin(const Scene &scene, const PathVertex &v,
                            LightChoice choice = LightChoice::LightSubpath) const;
+    // pdf_light_origin with next-event estimation's choice over that with the light subpath's:
+    // for a light with a position, the ratio of the two choices alone.
+    float next_event_ratio(const Scene &scene, const PathVertex &v) const;
     // Radiance this (light) vertex emits towards v.
     SampledSpectrum Le(const Scene &scene, const PathVertex &v, const SampledWavelengths &lambda) const;
 };
