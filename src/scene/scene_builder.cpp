@@ -99,6 +99,21 @@ std::string available_integrator_list() {
     return list;
 }
 
+// The Integrator's "lightsampler", with pbrt-v4's names, for next-event estimation: "bvh" (the
+// default) and "exhaustive" are pbrt-v4's light BVH and its tree-less equivalent, whose estimate
+// of each light's contribution, power over squared distance, Caustica uses without the
+// orientation bounds (SpatialLightSampler). Light subpaths take
+// the same sampler's choice without a position (by power for "bvh" and "power", uniform for
+// "uniform"), or by power when emissive media start them too.
+std::unique_ptr<LightSampler> create_light_sampler(const ParameterDictionary &params, const std::vector<LightPtr> &lights) {
+    const std::string name = params.get_one_string("lightsampler", "bvh");
+    if (name == "bvh" || name == "exhaustive") return std::make_unique<SpatialLightSampler>(lights);
+    if (name == "power") return std::make_unique<PowerLightSampler>(lights);
+    if (name == "uniform") return std::make_unique<UniformLightSampler>(lights);
+    throw InputError(params.location("lightsampler"),
+                     "\"lightsampler\": unknown light sampler \"" + name + "\" (bvh, exhaustive, power or uniform)");
+}
+
 void choose_integrator(const SceneDescription &d, const RenderOverrides &ov, Scene &scene) {
     if (d.integrator.params.has("maxdepth")) {
         int depth = d.integrator.params.get_one_int("maxdepth", 5);
@@ -468,7 +483,7 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     scene->geometry.commit();
     Bounds3f bounds = scene->geometry.bounds();
     for (const LightPtr &light : scene->lights) light->preprocess(bounds);
-    scene->light_sampler = std::make_unique<SpatialLightSampler>(scene->lights);
+    scene->light_sampler = create_light_sampler(d.integrator.params, scene->lights);
     add_medium_emitters(bounds, *scene);
     analyse_features(d, *scene);
     std::vector<const Light *> emitters;
