@@ -220,6 +220,7 @@ int light_subpath(const SubpathContext &ctx, PathVertex *path, int max_count) {
         along_ray.si.p = origin.p() + d;
         origin.pdf_fwd = origin.pdf_light_origin(scene, along_ray);
     }
+    if (count > 1) origin.next_event_ratio_ahead = origin.next_event_ratio(scene, path[1]);
     return count;
 }
 

@@ -72,7 +72,9 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
     // nee_factor, squared for the power heuristic.
     const PathVertex &x0 = s > 0 ? light_vertices[0] : *pt;
     const PathVertex *x1 = s > 1 ? &light_vertices[1] : s == 1 ? pt : pt_minus;
-    const float nee_factor = x1 && x0.is_light() ? sqr(x0.next_event_ratio(scene, *x1)) : 1.f;
+    const float nee_factor = s > 1   ? sqr(x0.next_event_ratio_ahead)
+                             : x1 && x0.is_light() ? sqr(x0.next_event_ratio(scene, *x1))
+                                                   : 1.f;
     const int k = s + t; // the strategies (s', t') of this path have s' + t' = k
     auto factor = [&](int s_other) { return s_other == 1 && k - s_other >= 2 ? nee_factor : 1.f; };
     const float this_factor = factor(s);

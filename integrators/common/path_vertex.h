@@ -73,6 +73,9 @@ struct PathVertex {
     // Medium emitter vertices: the mean extinction over the carried wavelengths at the point,
     // which sets the free-flight density of reaching it (see above).
     float collision_sigma = 0;
+    // A light subpath's origin: next_event_ratio towards the subpath's next vertex, which every
+    // strategy with s >= 2 weighs (mis_weight.cpp); kept once for all of them.
+    float next_event_ratio_ahead = 1;
 
     Vec3f p() const { return si.p; }
     Vec3f ng() const { return si.n; }
