@@ -102,9 +102,9 @@ std::string available_integrator_list() {
 // The Integrator's "lightsampler", with pbrt-v4's names, for next-event estimation: "bvh" (the
 // default) and "exhaustive" are pbrt-v4's light BVH and its tree-less equivalent, whose estimate
 // of each light's contribution, power over squared distance, Caustica uses without the
-// orientation bounds (SpatialLightSampler). Light subpaths take
-// the same sampler's choice without a position (by power for "bvh" and "power", uniform for
-// "uniform"), or by power when emissive media start them too.
+// orientation bounds (SpatialLightSampler). Light subpaths take the same sampler's choice
+// without a position (by power for "bvh" and "power", uniform for "uniform"), or by power when
+// emissive media start them too.
 std::unique_ptr<LightSampler> create_light_sampler(const ParameterDictionary &params, const std::vector<LightPtr> &lights) {
     const std::string name = params.get_one_string("lightsampler", "bvh");
     if (name == "bvh" || name == "exhaustive") return std::make_unique<SpatialLightSampler>(lights);
