@@ -1,5 +1,7 @@
 #include "integrators/common/light_path_start.h"
 
+#include "camera/camera.h"
+#include "integrators/common/transmittance.h"
 #include "lights/light_sampler.h"
 #include "media/medium_interface.h"
 #include "sampler/sampler.h"
@@ -49,5 +51,31 @@ std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &samp
 }
 
 float light_path_start_pmf(const Scene &scene, const Light &light) { return light_path_sampler(scene).pmf(&light); }
+
+std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const LightPathStart &start, Vec2f u_lens,
+                                                  const SampledWavelengths &lambda, uint64_t &rays) {
+    const LightLeSample &les = start.les;
+    // LightLeSample gives the sampled point only as the emitted ray's origin, already moved off
+    // the surface towards the sampled direction (a few ulps): that offset is far below anything
+    // visible.
+    const Vec3f p = les.ray.o;
+    auto cs = scene.camera->sample_wi(p, u_lens, lambda, les.ray.time);
+    if (!cs || !(cs->pdf > 0)) return std::nullopt;
+    SampledSpectrum Le = start.light->L(p, les.n, les.uv, cs->wi, lambda);
+    if (Le.is_black()) return std::nullopt;
+    // A point in a medium has no cosine: its Le is sigma_a Le per unit length, and pdf_pos is
+    // per unit volume.
+    const float cos_light = les.n == Vec3f{} ? 1.f : abs_dot(les.n, cs->wi);
+    SampledSpectrum L = Le * cs->We * (cos_light / (start.pmf * les.pdf_pos * cs->pdf));
+    if (L.is_black()) return std::nullopt;
+    // Traced from the lens (in the camera's medium) towards the light point: when a two-sided
+    // light is seen from the side opposite to the sampled emission direction, p lies on the
+    // wrong side and a ray spawned from it would start on the emitter; spawn_ray_to moves the
+    // target to the lens's side and stops short of it, whichever side p is on.
+    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, 0, p, les.n, les.error_scale, les.ray.time),
+                       scene.camera_medium, lambda, rays);
+    if (L.is_black()) return std::nullopt;
+    return StartSeenByLens{cs->p_raster, cs->p_lens, cos_light, L};
+}
 
 } // namespace caustica

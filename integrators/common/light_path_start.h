@@ -5,6 +5,7 @@
 #include "lights/light.h"
 #include "spectral/sampled_spectrum.h"
 
+#include <cstdint>
 #include <optional>
 
 namespace caustica {
@@ -41,5 +42,23 @@ std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &samp
 // subpath's throughput has it; MIS weights also take next-event estimation's choice of a light
 // for the strategies that sample it (bdpt and vcm).
 float light_path_start_pmf(const Scene &scene, const Light &light);
+
+// The start on an area light or in an emissive medium, joined to a lens point sampled with
+// u_lens (the s = 1, t = 1 strategy): the emission that the camera sees directly, which light
+// tracing renders with low variance where a light covers part of a pixel (its edges, and lights
+// seen at grazing angles) and a camera ray hits or misses it.
+struct StartSeenByLens {
+    Vec2f p_raster;    // where it lands on the film
+    Vec3f p_lens;
+    float cos_light;   // |cos| between the light's normal and the direction to the lens; 1 in a medium
+    // Le |cos_light| We T / (pmf pdf_pos pdf_lens), with pdf_lens as a solid angle at the light
+    // point and T the transmittance to the lens; unweighted.
+    SampledSpectrum L;
+};
+
+// Empty when the lens cannot be sampled from the start or nothing arrives there; rays counts the
+// transmittance rays.
+std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const LightPathStart &start, Vec2f u_lens,
+                                                  const SampledWavelengths &lambda, uint64_t &rays);
 
 } // namespace caustica

@@ -45,34 +45,6 @@ void splat(const LightPathContext &ctx, Vec2f p_raster, const SampledSpectrum &L
     ctx.scene.film->add_splat(p_raster, L, lambda);
 }
 
-// The light path's first vertex, the point on an area light or in an emissive medium, connected
-// to the lens (s = 1, t = 1): emission seen directly by the camera. Estimate Le(wi) |cos_light|
-// We / (pmf pdf_pos pdf_lens), where sample_wi's pdf (solid angle at the light point) carries the
-// lens geometry; a point in a medium has no cosine (its Le is sigma_a Le per unit length, and
-// pdf_pos per unit volume).
-void connect_light_vertex(const LightPathContext &ctx, const Light &light, const LightLeSample &les,
-                          float light_pmf, const SampledWavelengths &lambda) {
-    const Scene &scene = ctx.scene;
-    // LightLeSample gives the sampled point only as the emitted ray's origin, already moved off
-    // the surface towards the sampled direction (a few ulps): that offset is far below anything
-    // visible.
-    const Vec3f p = les.ray.o;
-    auto cs = scene.camera->sample_wi(p, ctx.sample.sampler.get_2d(), lambda, les.ray.time);
-    if (!cs || !(cs->pdf > 0)) return;
-    SampledSpectrum Le = light.L(p, les.n, les.uv, cs->wi, lambda);
-    if (Le.is_black()) return;
-    const float cosine = les.n == Vec3f{} ? 1.f : abs_dot(les.n, cs->wi);
-    SampledSpectrum L = Le * cs->We * (cosine / (light_pmf * les.pdf_pos * cs->pdf));
-    if (L.is_black()) return;
-    // Traced from the lens (in the camera's medium) towards the light point: when a two-sided
-    // light is seen from the side opposite to the sampled emission direction, p lies on the
-    // wrong side and a ray spawned from it would start on the emitter; spawn_ray_to moves the
-    // target to the lens's side and stops short of it, whichever side p is on.
-    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, 0, p, les.n, les.error_scale, les.ray.time), scene.camera_medium, lambda,
-                       ctx.sample.rays);
-    splat(ctx, cs->p_raster, L, lambda);
-}
-
 // Connects a scattering vertex, reached with the given throughput, to a sampled lens point
 // (t = 1) and splats the result.
 void connect_to_lens(const LightPathContext &ctx, const ScatteringPoint &point, const SampledSpectrum &throughput,
@@ -118,7 +90,8 @@ void trace_light_path(const LightPathContext &ctx) {
     const bool from_medium = start->light->type() == LightType::Volume;
     int depth = from_medium ? 1 : 0;
     if ((start->light->type() == LightType::Area || from_medium) && depth <= ctx.max_depth)
-        connect_light_vertex(ctx, *start->light, start->les, start->pmf, lambda);
+        if (auto seen = join_start_to_lens(scene, *start, sampler.get_2d(), lambda, ctx.sample.rays))
+            splat(ctx, seen->p_raster, seen->L, lambda);
 
     // The emitted flux is kept apart from the walk's throughput, so that Russian roulette sees
     // the throughput on the same scale (starting at 1) as in the path tracer. The path starts in

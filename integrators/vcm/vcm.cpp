@@ -198,6 +198,30 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
     scene.film->add_splat(cs->p_raster, L * T, lambda);
 }
 
+// Joins the light subpath's start on an area light to a sampled lens point and splats it: the
+// emission that the camera sees directly, weighed against the camera subpath hitting the light
+// (the one other strategy for a path of two vertices, trace_camera_path's first vertex).
+void connect_start_to_camera(const LightPathContext &ctx, const LightPathStart &start,
+                             const SampledWavelengths &lambda, Vec2f u_lens) {
+    const Scene &scene = ctx.it.scene;
+    const std::optional<StartSeenByLens> seen = join_start_to_lens(scene, start, u_lens, lambda, ctx.pixel.rays);
+    if (!seen) return;
+    // The camera's density of the light point per pixel of the full frame, as for any other
+    // vertex that light tracing joins to the lens (connect_to_camera).
+    const Vec3f to_light = start.les.ray.o - seen->p_lens;
+    float pdf_lens, pdf_dir;
+    scene.camera->pdf_we(Ray{seen->p_lens, normalize(to_light), Infinity, start.les.ray.time}, &pdf_lens, &pdf_dir);
+    const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * seen->cos_light / length_squared(to_light);
+    const float w_light = SubpathMis::light_point(start.pmf * start.les.pdf_pos)
+                              .connected(camera_pdf_a / ctx.it.light_paths, 0, NoMerge);
+    const SampledSpectrum L = seen->L / (1 + w_light);
+    if (L.has_non_finite()) {
+        ++ctx.pixel.non_finite;
+        return;
+    }
+    scene.film->add_splat(seen->p_raster, L, lambda);
+}
+
 // The light subpath's weights at its start (tech. report eqs. 31-33), set once its first vertex
 // is reached. Each strategy's density of the start has its own choice of the light: the light
 // subpath's is by power over the lights and emissive media (start.pmf), next-event estimation's
@@ -237,6 +261,11 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, st
     // its free flight's included: a factor known once the first vertex is (below), where a
     // surface light has its cosine.
     const bool medium_start = light.type() == LightType::Volume;
+    if (it.use_vc && light.type() == LightType::Area) {
+        // Drawn whether or not the lens is joined, as for the vertices below.
+        const Vec2f u_lens = sampler.get_2d();
+        if (ctx.connect_to_lens) connect_start_to_camera(ctx, *start, lambda, u_lens);
+    }
     SubpathMis m; // set at the first vertex (light_start_mis)
     int path_length = 0;
     float start_sigma = 0;
@@ -610,15 +639,16 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
             const SurfaceInteraction &si = walk.hit();
             SampledSpectrum Le = si.area_light->L(si.p, si.n, si.uv, si.wo, lambda);
             if (!Le.is_black()) {
-                if (path_length == 1) {
-                    add(Le);
-                } else {
-                    EmissionDensities e = emission_densities(*si.area_light, si.p, si.n, si.wo);
-                    const float direct_pdf = scene.light_sampler->pmf(previous, si.area_light) * e.pdf_pos;
-                    const float emission_pdf = light_path_start_pmf(scene, *si.area_light) * e.pdf_pos * e.pdf_dir;
-                    const float w_camera = m.hit_emitter(w, direct_pdf, emission_pdf);
-                    add(Le / (1 + w_camera));
-                }
+                // Seen directly from the lens, the point is weighed against light tracing of the
+                // light subpaths' starts (connect_start_to_camera), which chose it by their own
+                // choice of a light; further along, against next-event estimation from the
+                // previous vertex.
+                EmissionDensities e = emission_densities(*si.area_light, si.p, si.n, si.wo);
+                const float start_pmf = light_path_start_pmf(scene, *si.area_light);
+                const float direct_pdf =
+                    (path_length == 1 ? start_pmf : scene.light_sampler->pmf(previous, si.area_light)) * e.pdf_pos;
+                const float w_camera = m.hit_emitter(w, direct_pdf, start_pmf * e.pdf_pos * e.pdf_dir);
+                add(Le / (1 + w_camera));
             }
         }
         // Scattering on from vertex max_depth can still reach an emitter (a path of max_depth

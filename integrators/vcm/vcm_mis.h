@@ -105,6 +105,16 @@ struct SubpathMis {
         return m;
     }
 
+    // The light subpath at its start, before it leaves the light: start_pdf is the density with
+    // which it chose the point (light choice times position density). The start joined to the
+    // lens, light tracing of emission the camera sees directly, completes a path of two
+    // vertices, whose one other strategy is the camera subpath hitting the light.
+    static SubpathMis light_point(float start_pdf) {
+        SubpathMis m;
+        m.d_vcm = mis(1 / start_pdf);
+        return m;
+    }
+
     // A camera subpath leaves the lens with the directional density camera_pdf, one sample per
     // pixel of the full frame, while light tracing reaches the lens with light_paths paths (eq.
     // 31 for the camera).
@@ -163,8 +173,10 @@ struct SubpathMis {
     }
 
     // This camera subpath has reached an emitter: direct_pdf, the density with which light
-    // sampling would have chosen the point (area measure, or solid angle at infinity);
-    // emission_pdf, the density of emitting the path's last segment from it (eq. 44).
+    // sampling would have chosen the point (area measure, or solid angle at infinity; at the
+    // camera subpath's first vertex, the light subpath's density of its start, which light
+    // tracing joins to the lens); emission_pdf, the density of emitting the path's last segment
+    // from it (eq. 44).
     float hit_emitter(const VcmWeights &w, float direct_pdf, float emission_pdf) const {
         return w.vc_enabled * mis(direct_pdf) * d_vcm + mis(emission_pdf) * d_vc;
     }

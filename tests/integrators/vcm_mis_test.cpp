@@ -156,13 +156,19 @@ std::vector<Strategy> strategies(const SyntheticPath &path, const VcmWeights &w,
     }
 
     std::vector<Strategy> out;
-    // The camera path hits the light (after at least one scattering vertex).
+    // The camera path hits the light (directly from the lens when k = 1).
     out.push_back({"hit", 0, product(-1, 0),
                    1 / (1 + camera[0].hit_emitter(w, path.light_choice_pdf_pos, emission_pdf))});
     for (int s = 1; s <= k && use_vc; ++s) {
         const int y = s - 1, z = s; // the light subpath's end and the camera subpath's
         if (x[y].specular || (z < k && x[z].specular)) continue;
-        if (s == 1 && path.medium_start()) {
+        if (k == 1) {
+            // The light subpath's start joined to the lens (connect_start_to_camera).
+            const float camera_pdf_a = path.camera_pdf * path.cosine(0, 1) / path.dist2(0, 1);
+            const float w_light = SubpathMis::light_point(path.light_choice_pdf_pos)
+                                      .connected(camera_pdf_a / path.light_paths, 0, NoMerge);
+            out.push_back({"start traced", s, product(0, 1) * path.light_paths, 1 / (1 + w_light)});
+        } else if (s == 1 && path.medium_start()) {
             // x_1 joined to the start in the medium (connect_to_medium_start).
             const float camera_pdf = x[1].rev * path.start_factor() / path.dist2(0, 1);
             const float w_light = mis(camera_pdf / path.light_choice_pdf_pos);
@@ -231,7 +237,11 @@ void expect_weights_match(bool use_vc, bool medium_start = false) {
     std::mt19937 rng(use_vc ? 1234 : 4321);
     int paths = 0;
     for (int trial = 0; trial < 4000; ++trial) {
-        const SyntheticPath path = random_path(rng, 2 + trial % 6, medium_start);
+        // A light seen directly (k = 1) has light tracing of its start against the camera's
+        // hit; a start in a medium is not joined to the lens (the camera's collision estimate
+        // is the one strategy there).
+        const int k = medium_start ? 2 + trial % 6 : 1 + trial % 7;
+        const SyntheticPath path = random_path(rng, k, medium_start);
         const Discrepancy d = check(path, weights_for(path, use_vc), use_vc);
         ASSERT_LT(d.sum, 1e-4) << "path length " << path.k() << ", trial " << trial;
         ASSERT_LT(d.weight, 1e-3) << "path length " << path.k() << ", trial " << trial;
