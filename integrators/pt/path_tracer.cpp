@@ -12,6 +12,7 @@ PathTracer::PathTracer(const ParameterDictionary &params)
     : max_depth_(params.get_one_int("maxdepth", 5)) {
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
+    params.report_unused();
 }
 
 namespace {

@@ -12,7 +12,7 @@ namespace caustica {
 
 class PathTracer final : public Integrator {
   public:
-    // Parameters (pbrt-v4 names): "maxdepth" (5), "regularize" is not supported.
+    // Parameters (pbrt-v4 names): "maxdepth" (5); "regularize" is not supported (reported as unused).
     explicit PathTracer(const ParameterDictionary &params);
     void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                 const ProgressCallback &progress) override;

@@ -483,7 +483,7 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     scene->geometry.commit();
     Bounds3f bounds = scene->geometry.bounds();
     for (const LightPtr &light : scene->lights) light->preprocess(bounds);
-    scene->light_sampler = create_light_sampler(d.integrator.params, scene->lights);
+    scene->light_sampler = create_light_sampler(scene->integrator_params, scene->lights);
     add_medium_emitters(bounds, *scene);
     analyse_features(d, *scene);
     std::vector<const Light *> emitters;

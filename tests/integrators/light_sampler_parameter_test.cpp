@@ -4,6 +4,7 @@
 //   - power: the weak light's share of the power, 1/10;
 //   - uniform: 1/2;
 //   - bvh and exhaustive: power over squared distance, which favours the near light (1/1.9).
+#include "integrators/integrator.h"
 #include "parser/scene_description.h"
 #include "scene/scene.h"
 
@@ -38,4 +39,23 @@ TEST(LightSamplerParameter, EachNameGivesItsOwnChoice) {
     EXPECT_NEAR(weak_light_pmf_near_it("bvh"), 1.f / 1.9f, 1e-4f);
     EXPECT_NEAR(weak_light_pmf_near_it("exhaustive"), 1.f / 1.9f, 1e-4f);
     EXPECT_NEAR(weak_light_pmf_near_it(""), 1.f / 1.9f, 1e-4f); // the default is bvh
+}
+
+// Every integrator reports the Integrator parameters that nothing read (as shapes, materials and
+// lights do theirs), and "lightsampler", which the scene builder reads, is not among them.
+TEST(LightSamplerParameter, IntegratorsReportOnlyTheParametersNothingRead) {
+    for (const char *name : {"pt", "lt", "bdpt", "sppm", "bpm", "vcm"}) {
+        set_warnings_enabled(true);
+        const std::string text = std::string("LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\"\nIntegrator \"") +
+                                 name +
+                                 "\" \"string lightsampler\" \"power\" \"integer foo\" [ 3 ]\n"
+                                 "WorldBegin\nLightSource \"point\" \"rgb I\" [ 1 1 1 ]\n";
+        std::unique_ptr<Scene> scene = build_scene(parse_scene_string(text), RenderOverrides{});
+        testing::internal::CaptureStderr();
+        create_integrator(*scene);
+        const std::string err = testing::internal::GetCapturedStderr();
+        EXPECT_NE(err.find("unused parameter \"integer foo\""), std::string::npos) << name << ": " << err;
+        EXPECT_EQ(err.find("lightsampler"), std::string::npos) << name << ": " << err;
+    }
+    set_warnings_enabled(false);
 }
