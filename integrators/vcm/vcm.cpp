@@ -151,6 +151,18 @@ EmissionDensities emission_densities(const Light &light, Vec3f p, Vec3f n, Vec3f
     return e;
 }
 
+// The density with which next-event estimation picks a light point, given the light's choice
+// (pmf) from the receiving vertex: times the position density (pdf_pos) for an area light or a
+// point light (whose delta position counts 1), times the directional density at the receiver
+// (pdf_li) for an environment light; a distant light's one direction counts 1. The light
+// subpath's start (light_start_mis), next-event estimation itself (sample_light) and the camera
+// subpath's hits on lights all weigh this strategy with it.
+float next_event_density(const Light &light, float pmf, float pdf_pos, float pdf_li) {
+    if (light.type() == LightType::Infinite) return pmf * pdf_li;
+    if (light.type() == LightType::DeltaDirection) return pmf;
+    return pmf * pdf_pos;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Light subpaths
 
@@ -235,12 +247,10 @@ SubpathMis light_start_mis(const Scene &scene, const VcmWeights &w, const LightP
     const LightLeSample &les = start.les;
     const LightSampleContext receiver{first.p, first.ng, first.ns};
     float direct_pdf = start.pmf * les.pdf_pos;
-    if (light.type() == LightType::Infinite)
-        direct_pdf = scene.light_sampler->pmf(receiver, &light) * light.pdf_li(receiver, -les.ray.d);
-    else if (light.type() == LightType::DeltaDirection)
-        direct_pdf = scene.light_sampler->pmf(receiver, &light) * les.pdf_dir;
-    else if (light.type() != LightType::Volume)
-        direct_pdf = scene.light_sampler->pmf(receiver, &light) * les.pdf_pos;
+    if (light.type() != LightType::Volume) {
+        const float pdf_li = light.type() == LightType::Infinite ? light.pdf_li(receiver, -les.ray.d) : 0.f;
+        direct_pdf = next_event_density(light, scene.light_sampler->pmf(receiver, &light), les.pdf_pos, pdf_li);
+    }
     return SubpathMis::light_start(w, start.pmf * les.pdf_pos * les.pdf_dir, direct_pdf,
                                    start.at_infinity() ? 1.f : start.cos_origin, !is_delta_light(light.type()));
 }
@@ -389,10 +399,8 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
     EmissionDensities e = emission_densities(light, ls->p_light, ls->n_light, -ls->wi);
     // The next-event density that the other strategies' weights assume (see light_start_mis),
     // as a solid angle at z.
-    float assumed_direct_pdf = chosen->pmf;
-    if (light.type() == LightType::Area) assumed_direct_pdf *= e.pdf_pos * dist2 / cos_at_light;
-    else if (light.type() == LightType::DeltaPosition) assumed_direct_pdf *= dist2;
-    else if (light.type() == LightType::Infinite) assumed_direct_pdf *= ls->pdf;
+    float assumed_direct_pdf = next_event_density(light, chosen->pmf, e.pdf_pos, ls->pdf);
+    if (!at_infinity) assumed_direct_pdf = assumed_direct_pdf * dist2 / cos_at_light;
     const float emission_pdf = light_path_start_pmf(scene, light) * e.pdf_pos * e.pdf_dir;
     const float w_light = is_delta_light(light.type()) ? 0.f : mis(scattering.pdf_forward / assumed_direct_pdf);
     const float pdf_reverse = z.after_jump ? 1.f : scattering.pdf_reverse;
@@ -624,7 +632,8 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                 }
                 const Vec3f wi = normalize(walk.ray().d);
                 EmissionDensities e = emission_densities(*light, walk.origin(), Vec3f{}, -wi);
-                const float direct_pdf = scene.light_sampler->pmf(previous, light) * light->pdf_li(previous, wi);
+                const float direct_pdf =
+                    next_event_density(*light, scene.light_sampler->pmf(previous, light), 0, light->pdf_li(previous, wi));
                 const float emission_pdf = light_path_start_pmf(scene, *light) * e.pdf_pos * e.pdf_dir;
                 const float w_camera = m.hit_emitter(w, direct_pdf, emission_pdf);
                 add(Le / (1 + w_camera));
@@ -645,8 +654,8 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                 // previous vertex.
                 EmissionDensities e = emission_densities(*si.area_light, si.p, si.n, si.wo);
                 const float start_pmf = light_path_start_pmf(scene, *si.area_light);
-                const float direct_pdf =
-                    (path_length == 1 ? start_pmf : scene.light_sampler->pmf(previous, si.area_light)) * e.pdf_pos;
+                const float choice = path_length == 1 ? start_pmf : scene.light_sampler->pmf(previous, si.area_light);
+                const float direct_pdf = next_event_density(*si.area_light, choice, e.pdf_pos, 0);
                 const float w_camera = m.hit_emitter(w, direct_pdf, start_pmf * e.pdf_pos * e.pdf_dir);
                 add(Le / (1 + w_camera));
             }
