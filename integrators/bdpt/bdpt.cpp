@@ -302,6 +302,13 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         sampled.si.error_scale = ls->error_scale_light;
         sampled.beta = ls->L / (chosen->pmf * ls->pdf);
         sampled.pdf_fwd = sampled.pdf_light_origin(scene, pt);
+        // Next-event estimation's choice over the light subpath's, which the weights need
+        // (mis_weight.cpp): known here without asking the light sampler again, but for a
+        // direction at infinity, which any of the infinite lights may have produced.
+        const float light_subpath_pmf = light_path_start_pmf(scene, *chosen->light);
+        sampled.next_event_ratio_ahead = ls->is_infinite        ? sampled.next_event_ratio(scene, pt)
+                                         : light_subpath_pmf > 0 ? chosen->pmf / light_subpath_pmf
+                                                                 : 1.f;
         L = pt.beta * pt.f(ls->wi, TransportMode::Radiance) * pt.cosine(ls->wi, TransportMode::Radiance) *
             sampled.beta;
         if (L.is_black()) return c;

@@ -71,10 +71,10 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
     // chooses the light by x_1's position: that strategy's density is the others' times
     // nee_factor, squared for the power heuristic.
     // (x_1 is the light subpath's second vertex for s > 1, whose ratio its origin keeps; pt for
-    // s = 1; for s = 0, x_0 is pt and x_1 its predecessor.)
-    const float nee_factor = s > 1    ? sqr(light_vertices[0].next_event_ratio_ahead)
-                             : s == 1 ? sqr(light_vertices[0].next_event_ratio(scene, *pt))
-                                      : sqr(pt->next_event_ratio(scene, *pt_minus));
+    // s = 1, whose sampled light point keeps it (connect); for s = 0, x_0 is pt and x_1 its
+    // predecessor. For s = 1, t = 1 no strategy of the path has the factor.)
+    const float nee_factor = s >= 1 ? sqr(light_vertices[0].next_event_ratio_ahead)
+                                    : sqr(pt->next_event_ratio(scene, *pt_minus));
     const int k = s + t; // the strategies (s', t') of this path have s' + t' = k
     auto factor = [&](int s_other) { return s_other == 1 && k - s_other >= 2 ? nee_factor : 1.f; };
     const float this_factor = factor(s);

@@ -74,7 +74,8 @@ struct PathVertex {
     // which sets the free-flight density of reaching it (see above).
     float collision_sigma = 0;
     // A light subpath's origin: next_event_ratio towards the subpath's next vertex, which every
-    // strategy with s >= 2 weighs (mis_weight.cpp); kept once for all of them.
+    // strategy with s >= 2 weighs (mis_weight.cpp); kept once for all of them. A light point
+    // that next-event estimation sampled: the ratio towards the vertex it was sampled from.
     float next_event_ratio_ahead = 1;
 
     Vec3f p() const { return si.p; }
