@@ -198,7 +198,11 @@ class BdptMis : public ::testing::Test {
                                                                         : PathVertex::LightChoice::LightSubpath;
                     light[0].pdf_fwd =
                         light[0].pdf_light_origin(*scene_, j + 1 < s ? light[1] : camera[t - 1], choice);
-                    if (s >= 2) light[0].next_event_ratio_ahead = light[0].next_event_ratio(*scene_, light[1]);
+                    // The ratio of the two choices towards x_1: kept by the light subpath's
+                    // origin (s >= 2), or by the point next-event estimation sampled (s = 1, as
+                    // connect keeps it).
+                    light[0].next_event_ratio_ahead =
+                        light[0].next_event_ratio(*scene_, j + 1 < s ? light[1] : camera[t - 1]);
                 }
                 else if (j == 1) light[1].pdf_fwd = light[0].pdf_light(*scene_, light[1]) * emission_error;
                 else light[j].pdf_fwd = light[j - 1].pdf(*scene_, &light[j - 2], light[j]);
