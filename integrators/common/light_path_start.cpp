@@ -75,7 +75,7 @@ std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const Ligh
     L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, 0, p, les.n, les.error_scale, les.ray.time),
                        scene.camera_medium, lambda, rays);
     if (L.is_black()) return std::nullopt;
-    return StartSeenByLens{cs->p_raster, cs->p_lens, cos_light, L};
+    return StartSeenByLens{cs->p_raster, cs->p_lens, cs->wi, cos_light, L};
 }
 
 } // namespace caustica

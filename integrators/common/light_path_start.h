@@ -50,6 +50,7 @@ float light_path_start_pmf(const Scene &scene, const Light &light);
 struct StartSeenByLens {
     Vec2f p_raster;    // where it lands on the film
     Vec3f p_lens;
+    Vec3f wi;          // the unit direction from the light point to the lens
     float cos_light;   // |cos| between the light's normal and the direction to the lens; 1 in a medium
     // Le |cos_light| We T / (pmf pdf_pos pdf_lens), with pdf_lens as a solid angle at the light
     // point and T the transmittance to the lens; unweighted.

@@ -177,6 +177,16 @@ struct LightPathContext {
     bool connect_to_lens;
 };
 
+// The density with which the camera generates a point p that light tracing joined to the lens
+// point p_lens: its directional density towards p (the same lens point is sampled by both
+// strategies, so the lens density cancels), per pixel of the full frame, converted to the area
+// measure at p. wi: the unit direction from p to the lens; cos_at_p: |cos| there (1 in a medium).
+float camera_area_density(const Iteration &it, Vec3f p, Vec3f p_lens, Vec3f wi, float cos_at_p, float time) {
+    float pdf_lens, pdf_dir;
+    it.scene.camera->pdf_we(Ray{p_lens, -wi, Infinity, time}, &pdf_lens, &pdf_dir);
+    return pdf_dir * it.full_frame_pixels * cos_at_p / length_squared(p_lens - p);
+}
+
 // Connects a light vertex to a sampled lens point (light tracing, the t = 1 strategy) and
 // splats the weighted contribution where it lands on the film.
 void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const SubpathMis &m,
@@ -188,13 +198,7 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
     SampledSpectrum f = point.f(cs->wi, TransportMode::Importance);
     if (f.is_black()) return;
 
-    // The camera would generate this vertex with its directional density (the same lens point
-    // is sampled by both strategies, so the lens density cancels), per pixel of the full frame,
-    // converted to the area measure here.
-    float pdf_lens, pdf_dir;
-    scene.camera->pdf_we(Ray{cs->p_lens, -cs->wi, Infinity, point.time}, &pdf_lens, &pdf_dir);
-    const float dist2 = length_squared(cs->p_lens - point.p);
-    const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * point.cosine(cs->wi) / dist2;
+    const float camera_pdf_a = camera_area_density(ctx.it, point.p, cs->p_lens, cs->wi, point.cosine(cs->wi), point.time);
     const float bsdf_rev_pdf = v.after_jump ? 1.f : point.pdf(cs->wi, point.wo, TransportMode::Radiance);
     const MergeWeights &merge = v.after_jump ? NoMerge : ctx.w.at(point.in_medium());
     const float w_light = m.connected(camera_pdf_a / ctx.it.light_paths, bsdf_rev_pdf, merge);
@@ -218,12 +222,8 @@ void connect_start_to_camera(const LightPathContext &ctx, const LightPathStart &
     const Scene &scene = ctx.it.scene;
     const std::optional<StartSeenByLens> seen = join_start_to_lens(scene, start, u_lens, lambda, ctx.pixel.rays);
     if (!seen) return;
-    // The camera's density of the light point per pixel of the full frame, as for any other
-    // vertex that light tracing joins to the lens (connect_to_camera).
-    const Vec3f to_light = start.les.ray.o - seen->p_lens;
-    float pdf_lens, pdf_dir;
-    scene.camera->pdf_we(Ray{seen->p_lens, normalize(to_light), Infinity, start.les.ray.time}, &pdf_lens, &pdf_dir);
-    const float camera_pdf_a = pdf_dir * ctx.it.full_frame_pixels * seen->cos_light / length_squared(to_light);
+    const float camera_pdf_a =
+        camera_area_density(ctx.it, start.les.ray.o, seen->p_lens, seen->wi, seen->cos_light, start.les.ray.time);
     const float w_light = SubpathMis::light_point(start.pmf * start.les.pdf_pos)
                               .connected(camera_pdf_a / ctx.it.light_paths, 0, NoMerge);
     const SampledSpectrum L = seen->L / (1 + w_light);
