@@ -237,7 +237,7 @@ void connect_start_to_camera(const LightPathContext &ctx, const LightPathStart &
 // The light subpath's weights at its start (tech. report eqs. 31-33), set once its first vertex
 // is reached. Each strategy's density of the start has its own choice of the light: the light
 // subpath's is by power over the lights and emissive media (start.pmf), next-event estimation's
-// by position from the vertex it receives light at (SpatialLightSampler), here the first vertex,
+// by importance at the vertex it receives light at (BVHLightSampler), here the first vertex,
 // which also sets an environment light's directional density through a portal. A start in an
 // emissive medium, which next-event estimation does not sample, has the light subpath's choice
 // for both (connect_to_medium_start joins camera vertices to it).

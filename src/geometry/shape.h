@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/vecmath.h"
+#include "geometry/direction_cone.h"
 
 #include <optional>
 
@@ -20,6 +21,8 @@ class Shape {
     virtual ~Shape() = default;
     virtual float area() const = 0;
     virtual Bounds3f bounds() const = 0;
+    // A cone holding the (oriented) normal of every point of the shape. Default: any direction.
+    virtual DirectionCone normal_bounds() const { return DirectionCone::entire_sphere(); }
     // Uniform by area.
     virtual std::optional<ShapeSample> sample(Vec2f u) const = 0;
     // Sampled as seen from ref; pdf with respect to solid angle at ref. Default: area sampling

@@ -23,6 +23,15 @@ Bounds3f Triangle::bounds() const {
     return b;
 }
 
+DirectionCone Triangle::normal_bounds() const {
+    // The oriented normal is the plane's, turned to the side of the interpolated normal; that
+    // side's test is linear in the barycentrics, so if all three corners agree, every point does.
+    const float corners[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const Vec3f n = mesh_->normal(index_, corners[0]);
+    if (mesh_->normal(index_, corners[1]) == n && mesh_->normal(index_, corners[2]) == n) return {n, 1.f};
+    return DirectionCone::entire_sphere();
+}
+
 ShapeSample Triangle::sample_at(const double b[3]) const {
     float bf[3] = {float(b[0]), float(b[1]), float(b[2])};
     ShapeSample ss;

@@ -16,6 +16,7 @@ class Triangle : public Shape {
 
     float area() const override { return area_; }
     Bounds3f bounds() const override;
+    DirectionCone normal_bounds() const override;
     std::optional<ShapeSample> sample(Vec2f u) const override;
     // Uniform over the subtended solid angle (spherical triangle sampling) when the triangle
     // covers a sizeable solid angle; area sampling otherwise, where the two nearly agree.

@@ -27,6 +27,10 @@ class DiffuseAreaLight final : public Light {
     std::optional<Bounds3f> spatial_bounds() const override {
         return shape_->bounds();
     }
+    // About the shape's normals, diffusely.
+    EmissionDirections emission_directions() const override {
+        return {shape_->normal_bounds(), 0.f, two_sided_};
+    }
     std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
                                            const SampledWavelengths &lambda) const override;
     float pdf_li(const LightSampleContext &ctx, Vec3f wi) const override;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/vecmath.h"
+#include "geometry/direction_cone.h"
 #include "geometry/ray.h"
 #include "spectral/sampled_wavelengths.h"
 
@@ -29,6 +30,15 @@ inline bool is_delta_light(LightType t) {
 // The receiving point for next-event estimation; n is zero for points in media.
 struct LightSampleContext {
     Vec3f p, n, ns;
+};
+
+// The directions a light emits towards: every emitting point's normal lies in `normals`, and
+// emits within angle theta_e of it (pi / 2 for a diffuse surface). The default, theta_e = pi / 2
+// about the entire sphere of normals, bounds any light. Two-sided emitters emit about -n as well.
+struct EmissionDirections {
+    DirectionCone normals = DirectionCone::entire_sphere();
+    float cos_theta_e = 0;
+    bool two_sided = false;
 };
 
 struct LightLiSample {
@@ -63,6 +73,8 @@ class Light {
     // Where the light's emitting points lie, for light selection by distance; empty for lights
     // at infinity (distant, infinite).
     virtual std::optional<Bounds3f> spatial_bounds() const { return std::nullopt; }
+    // Towards which directions the light emits, for light selection (lights/light_bounds.h).
+    virtual EmissionDirections emission_directions() const { return {}; }
 
     virtual std::optional<LightLiSample> sample_li(const LightSampleContext &ctx, Vec2f u,
                                                    const SampledWavelengths &lambda) const = 0;

@@ -51,75 +51,66 @@ float PowerLightSampler::pmf(const Light *light) const {
     return it == index_.end() ? 0.f : distribution_.pmf(it->second);
 }
 
-SpatialLightSampler::SpatialLightSampler(const std::vector<LightPtr> &lights) : by_power_(lights) {
-    spatial_ = !lights.empty() && int(lights.size()) <= MaxLights;
-    if (!spatial_) return;
+ImportanceLightSampler::ImportanceLightSampler(const std::vector<LightPtr> &lights) : by_power_(lights) {
     for (const LightPtr &l : lights) {
-        index_.emplace(l.get(), int(lights_.size()));
-        lights_.push_back(l.get());
-        const float p = light_power(*l);
-        power_.push_back(std::isfinite(p) ? std::max(0.f, p) : 0.f);
-        std::optional<Bounds3f> bounds = l->spatial_bounds();
-        Vec3f c{};
-        float r = 0;
-        if (bounds && !bounds->empty()) bounds->bounding_sphere(&c, &r);
-        centre_.push_back(c);
-        radius2_.push_back(r * r);
-        at_infinity_.push_back(!bounds || bounds->empty());
-        (at_infinity_.back() ? infinite_count_ : local_count_) += 1;
-    }
-}
-
-float SpatialLightSampler::weights(Vec3f p, float *w) const {
-    // Local lights: power / max(distance^2, radius^2), normalised among themselves, so that all
-    // of them together weigh as much as one light at infinity.
-    float local_sum = 0;
-    const int n = int(lights_.size());
-    for (int i = 0; i < n; ++i) {
-        if (at_infinity_[i]) continue;
-        const float d2 = std::max(distance_squared(p, centre_[i]), radius2_[i]);
-        w[i] = d2 > 0 ? power_[i] / d2 : (power_[i] > 0 ? 1e30f : 0.f);
-        if (!std::isfinite(w[i])) w[i] = 1e30f;
-        local_sum += w[i];
-    }
-    // One share for every light at infinity and one for all local lights together.
-    float total = 0;
-    for (int i = 0; i < n; ++i) {
-        if (at_infinity_[i]) w[i] = 1;
-        else w[i] = local_sum > 0 ? w[i] / local_sum : 1.f / float(local_count_);
-        total += w[i];
-    }
-    return total;
-}
-
-std::optional<SampledLight> SpatialLightSampler::sample(const LightSampleContext &ctx, float u) const {
-    if (!spatial_) return by_power_.sample(u);
-    float w[MaxLights];
-    const float total = weights(ctx.p, w);
-    if (!(total > 0)) return by_power_.sample(u);
-    const int n = int(lights_.size());
-    float target = u * total, running = 0;
-    int chosen = n - 1;
-    for (int i = 0; i < n; ++i) {
-        running += w[i];
-        if (target < running && w[i] > 0) {
-            chosen = i;
-            break;
+        if (!l->spatial_bounds() || l->spatial_bounds()->empty()) {
+            index_.emplace(l.get(), -1 - int(unbounded_.size()));
+            unbounded_.push_back(l.get());
+        } else if (const std::optional<LightBounds> b = light_bounds(*l)) {
+            index_.emplace(l.get(), int(bounded_.size()));
+            bounded_.push_back(l.get());
+            bounded_bounds_.push_back(*b);
         }
     }
-    while (chosen > 0 && w[chosen] == 0) --chosen;
-    if (!(w[chosen] > 0)) return {};
-    return SampledLight{lights_[size_t(chosen)], w[chosen] / total};
 }
 
-float SpatialLightSampler::pmf(const LightSampleContext &ctx, const Light *light) const {
-    if (!spatial_) return by_power_.pmf(light);
-    auto it = index_.find(light);
+// One share for every light at infinity, and one for all bounded lights together.
+std::optional<SampledLight> ImportanceLightSampler::sample(const LightSampleContext &ctx, float u) const {
+    const int shares = int(unbounded_.size()) + (bounded_.empty() ? 0 : 1);
+    if (shares == 0) return {};
+    const float p_unbounded = float(unbounded_.size()) / float(shares);
+    if (u < p_unbounded) {
+        const int i = std::min(int(u * float(shares)), int(unbounded_.size()) - 1);
+        return SampledLight{unbounded_[size_t(i)], 1 / float(shares)};
+    }
+    u = std::min((u - p_unbounded) / (1 - p_unbounded), OneMinusEpsilon);
+    std::optional<SampledLight> s = sample_bounded(ctx, u);
+    if (s) s->pmf *= 1 - p_unbounded;
+    return s;
+}
+
+float ImportanceLightSampler::pmf(const LightSampleContext &ctx, const Light *light) const {
+    const auto it = index_.find(light);
     if (it == index_.end()) return 0;
-    float w[MaxLights];
-    const float total = weights(ctx.p, w);
-    if (!(total > 0)) return by_power_.pmf(light);
-    return w[it->second] / total;
+    const int shares = int(unbounded_.size()) + (bounded_.empty() ? 0 : 1);
+    if (it->second < 0) return 1 / float(shares);
+    return pmf_bounded(ctx, it->second) * (1 - float(unbounded_.size()) / float(shares));
+}
+
+std::optional<SampledLight> ExhaustiveLightSampler::sample_bounded(const LightSampleContext &ctx, float u) const {
+    double total = 0;
+    for (const LightBounds &b : bounded_bounds_) total += b.importance(ctx.p, ctx.ns);
+    if (!(total > 0)) return {};
+    const double target = double(u) * total;
+    double running = 0;
+    int last_positive = -1;
+    for (size_t i = 0; i < bounded_.size(); ++i) {
+        const float importance = bounded_bounds_[i].importance(ctx.p, ctx.ns);
+        if (!(importance > 0)) continue;
+        last_positive = int(i);
+        running += importance;
+        if (target < running) return SampledLight{bounded_[i], float(importance / total)};
+    }
+    // Rounding left target at the end of the sum.
+    return SampledLight{bounded_[size_t(last_positive)],
+                        float(bounded_bounds_[size_t(last_positive)].importance(ctx.p, ctx.ns) / total)};
+}
+
+float ExhaustiveLightSampler::pmf_bounded(const LightSampleContext &ctx, int bounded_index) const {
+    double total = 0;
+    for (const LightBounds &b : bounded_bounds_) total += b.importance(ctx.p, ctx.ns);
+    if (!(total > 0)) return 0;
+    return float(bounded_bounds_[size_t(bounded_index)].importance(ctx.p, ctx.ns) / total);
 }
 
 }  // namespace caustica

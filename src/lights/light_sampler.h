@@ -3,6 +3,7 @@
 
 #include "core/sampling.h"
 #include "lights/light.h"
+#include "lights/light_bounds.h"
 
 #include <optional>
 #include <unordered_map>
@@ -62,37 +63,45 @@ class PowerLightSampler final : public LightSampler {
     DiscreteDistribution distribution_;
 };
 
-// Lights chosen by power (as PowerLightSampler) where the choice cannot depend on a point (light
-// paths), and for next-event estimation by each light's power over its squared distance from
-// the receiving point, the distance taken no shorter than the radius of the light's bounding
-// sphere: the estimate of its contribution that pbrt-v4's light BVH (Conty Estevez and Kulla
-// 2018, "Importance Sampling of Many Lights with Adaptive Tree Splitting") refines, without the
-// orientation bounds. A small bright lamp near a wall then gets the wall's samples that its power
-// alone would give to a distant, more powerful light. Lights at infinity share, each as much as
-// all local lights together, as in pbrt-v4. The choice costs time linear in the number of
-// lights, so scenes with more than MaxLights lights (emissive meshes) keep choosing by power.
-class SpatialLightSampler final : public LightSampler {
+// The samplers of pbrt-v4's "bvh" and "exhaustive": for next-event estimation, each light is
+// chosen in proportion to its importance at the receiving point (LightBounds::importance, Conty
+// Estevez and Kulla 2018), which is zero only where the light cannot contribute; lights at
+// infinity share, each as much as all local lights together, as in pbrt-v4. Where the choice
+// cannot depend on a point (light paths), lights are chosen by power (as PowerLightSampler).
+class ImportanceLightSampler : public LightSampler {
   public:
-    static constexpr int MaxLights = 64;
-    explicit SpatialLightSampler(const std::vector<LightPtr> &lights);
-    std::optional<SampledLight> sample(float u) const override { return by_power_.sample(u); }
-    float pmf(const Light *light) const override { return by_power_.pmf(light); }
-    std::optional<SampledLight> sample(const LightSampleContext &ctx, float u) const override;
-    float pmf(const LightSampleContext &ctx, const Light *light) const override;
+    std::optional<SampledLight> sample(float u) const final { return by_power_.sample(u); }
+    float pmf(const Light *light) const final { return by_power_.pmf(light); }
+    std::optional<SampledLight> sample(const LightSampleContext &ctx, float u) const final;
+    float pmf(const LightSampleContext &ctx, const Light *light) const final;
+
+  protected:
+    // Sorts the lights into those with bounds (bounded_, with bounded_bounds_) and the rest.
+    explicit ImportanceLightSampler(const std::vector<LightPtr> &lights);
+    // The choice among the bounded lights (u in [0, 1)), and its probability.
+    virtual std::optional<SampledLight> sample_bounded(const LightSampleContext &ctx, float u) const = 0;
+    virtual float pmf_bounded(const LightSampleContext &ctx, int bounded_index) const = 0;
+
+    std::vector<const Light *> bounded_;
+    std::vector<LightBounds> bounded_bounds_;
 
   private:
-    // Each light's selection weight at p (unnormalised), into weights; returns their sum.
-    float weights(Vec3f p, float *weights) const;
-
     PowerLightSampler by_power_;
-    bool spatial_ = false;
-    std::vector<const Light *> lights_;
+    // Lights without spatial bounds (at infinity). Bounded lights without power are never
+    // chosen, as in pbrt-v4: nothing they could send would be seen.
+    std::vector<const Light *> unbounded_;
+    // Each light's index in bounded_ (>= 0) or in unbounded_ (-1 - index).
     std::unordered_map<const Light *, int> index_;
-    std::vector<float> power_;
-    std::vector<Vec3f> centre_;
-    std::vector<float> radius2_;
-    std::vector<bool> at_infinity_;
-    int local_count_ = 0, infinite_count_ = 0;
+};
+
+// pbrt-v4's "exhaustive": every bounded light's importance, in time linear in their number.
+class ExhaustiveLightSampler final : public ImportanceLightSampler {
+  public:
+    explicit ExhaustiveLightSampler(const std::vector<LightPtr> &lights) : ImportanceLightSampler(lights) {}
+
+  private:
+    std::optional<SampledLight> sample_bounded(const LightSampleContext &ctx, float u) const override;
+    float pmf_bounded(const LightSampleContext &ctx, int bounded_index) const override;
 };
 
 }  // namespace caustica

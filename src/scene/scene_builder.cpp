@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "film/film.h"
 #include "film/filter.h"
+#include "lights/bvh_light_sampler.h"
 #include "lights/light.h"
 #include "lights/light_factory.h"
 #include "lights/medium_emitter.h"
@@ -100,14 +101,14 @@ std::string available_integrator_list() {
 }
 
 // The Integrator's "lightsampler", with pbrt-v4's names, for next-event estimation: "bvh" (the
-// default) and "exhaustive" are pbrt-v4's light BVH and its tree-less equivalent, whose estimate
-// of each light's contribution, power over squared distance, Caustica uses without the
-// orientation bounds (SpatialLightSampler). Light subpaths take the same sampler's choice
-// without a position (by power for "bvh" and "power", uniform for "uniform"), or by power when
-// emissive media start them too.
+// default, BVHLightSampler) and "exhaustive" (ExhaustiveLightSampler) choose by each light's
+// importance at the receiving point, "power" and "uniform" without regard to it. Light subpaths
+// take the same sampler's choice without a position (by power for all but "uniform"), or by
+// power when emissive media start them too.
 std::unique_ptr<LightSampler> create_light_sampler(const ParameterDictionary &params, const std::vector<LightPtr> &lights) {
     const std::string name = params.get_one_string("lightsampler", "bvh");
-    if (name == "bvh" || name == "exhaustive") return std::make_unique<SpatialLightSampler>(lights);
+    if (name == "bvh") return std::make_unique<BVHLightSampler>(lights);
+    if (name == "exhaustive") return std::make_unique<ExhaustiveLightSampler>(lights);
     if (name == "power") return std::make_unique<PowerLightSampler>(lights);
     if (name == "uniform") return std::make_unique<UniformLightSampler>(lights);
     throw InputError(params.location("lightsampler"),

@@ -9,7 +9,7 @@
 // densities disagree with its sampling would have it), the sums are not one.
 //
 // With two lights, next-event estimation chooses between them by the receiving point's position
-// (SpatialLightSampler) and the light subpaths by power, so x_0 has one density in the s = 1
+// (BVHLightSampler) and the light subpaths by power, so x_0 has one density in the s = 1
 // strategy and another in those with s >= 2; mis_weight takes each strategy's own. The negative
 // control gives the light subpath's origin next-event estimation's choice instead.
 //
@@ -59,7 +59,7 @@ AttributeEnd
 )";
 
 // The box with a second light, a small bright one low on a wall: next-event estimation's choice
-// between the two lights then depends on the receiving point (SpatialLightSampler), and differs
+// between the two lights then depends on the receiving point (BVHLightSampler), and differs
 // from the light subpaths' choice by power.
 const std::string kTwoLightBox = std::string(kBox) + R"(AttributeBegin
   AreaLightSource "diffuse" "rgb L" [ 500 500 500 ]

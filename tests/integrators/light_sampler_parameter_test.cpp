@@ -3,7 +3,8 @@
 // a strong one far from it, tell the choices apart:
 //   - power: the weak light's share of the power, 1/10;
 //   - uniform: 1/2;
-//   - bvh and exhaustive: power over squared distance, which favours the near light (1/1.9).
+//   - bvh and exhaustive: importance, here (point lights, a receiver without a normal) power
+//     over squared distance, which favours the near light (1/1.9).
 #include "integrators/integrator.h"
 #include "parser/scene_description.h"
 #include "scene/scene.h"

@@ -1,5 +1,7 @@
 #include "lights/light_sampler.h"
 
+#include "lights/bvh_light_sampler.h"
+
 #include "core/rng.h"
 #include "lights/point_light.h"
 #include "lights/uniform_infinite_light.h"
@@ -58,13 +60,14 @@ LightPtr point_light_at(float intensity, Vec3f p) {
     return std::make_shared<PointLight>(Transform::translate(p), std::make_shared<ConstantSpectrum>(intensity), 1.f);
 }
 
-// Next-event estimation's choice: power over squared distance, normalised over the local lights,
-// with one share for each light at infinity; sample() and pmf() agree, and the choice without a
-// point stays by power (light paths).
-TEST(SpatialLightSampler, PrefersNearLightsByPowerOverSquaredDistance) {
+// Next-event estimation's choice with point lamps above a receiver facing them: importance is
+// power over squared distance (the receiver's cosine is 1 towards both), for the exhaustive
+// sampler and the light BVH alike; sample() and pmf() agree, and the choice without a point
+// stays by power (light paths).
+template <class Sampler> void expect_near_lights_preferred() {
     // A weak lamp at distance 1 and one 100 times stronger at distance 20 from the origin.
-    std::vector<LightPtr> lights = {point_light_at(1, {1, 0, 0}), point_light_at(100, {0, 20, 0})};
-    SpatialLightSampler sampler(lights);
+    std::vector<LightPtr> lights = {point_light_at(1, {0, 0, 1}), point_light_at(100, {0, 0, 20})};
+    Sampler sampler(lights);
     LightSampleContext origin{{0, 0, 0}, {0, 0, 1}, {0, 0, 1}};
     // Weights 1 / 1 and 100 / 400.
     EXPECT_NEAR(sampler.pmf(origin, lights[0].get()), 1 / 1.25f, 1e-6f);
@@ -80,14 +83,25 @@ TEST(SpatialLightSampler, PrefersNearLightsByPowerOverSquaredDistance) {
     }
     EXPECT_NEAR(double(first) / n, 0.8, 2.0 / n);
     // Near the strong lamp it gets nearly every sample.
-    LightSampleContext near_strong{{0, 19, 0}, {0, 1, 0}, {0, 1, 0}};
+    LightSampleContext near_strong{{0, 0, 19}, {0, 0, 1}, {0, 0, 1}};
     EXPECT_GT(sampler.pmf(near_strong, lights[1].get()), 0.99f);
+    // A lamp in the receiver's tangent plane cannot light it.
+    LightSampleContext sideways{{0, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+    EXPECT_EQ(sampler.pmf(sideways, lights[0].get()), 0.f);
+    EXPECT_FALSE(sampler.sample(sideways, 0.5f));
 }
 
-TEST(SpatialLightSampler, LightsAtInfinityShareLikePbrtV4) {
-    std::vector<LightPtr> lights = {point_light_at(1, {1, 0, 0}), point_light_at(5, {3, 0, 0}),
+TEST(ExhaustiveLightSampler, PrefersNearLightsByPowerOverSquaredDistance) {
+    expect_near_lights_preferred<ExhaustiveLightSampler>();
+}
+TEST(BVHLightSampler, PrefersNearLightsByPowerOverSquaredDistance) {
+    expect_near_lights_preferred<BVHLightSampler>();
+}
+
+template <class Sampler> void expect_infinite_share() {
+    std::vector<LightPtr> lights = {point_light_at(1, {1, 0, 1}), point_light_at(5, {3, 0, 1}),
                                     std::make_shared<UniformInfiniteLight>(std::make_shared<ConstantSpectrum>(1.f), 1.f)};
-    SpatialLightSampler sampler(lights);
+    Sampler sampler(lights);
     LightSampleContext origin{{0, 0, 0}, {0, 0, 1}, {0, 0, 1}};
     // One share for the light at infinity, one for both lamps together.
     EXPECT_NEAR(sampler.pmf(origin, lights[2].get()), 0.5f, 1e-6f);
@@ -95,6 +109,9 @@ TEST(SpatialLightSampler, LightsAtInfinityShareLikePbrtV4) {
     for (const LightPtr &l : lights) sum += sampler.pmf(origin, l.get());
     EXPECT_NEAR(sum, 1, 1e-6f);
 }
+
+TEST(ExhaustiveLightSampler, LightsAtInfinityShareLikePbrtV4) { expect_infinite_share<ExhaustiveLightSampler>(); }
+TEST(BVHLightSampler, LightsAtInfinityShareLikePbrtV4) { expect_infinite_share<BVHLightSampler>(); }
 
 }  // namespace
 }  // namespace caustica

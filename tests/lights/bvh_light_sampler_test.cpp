@@ -1,0 +1,210 @@
+// The light samplers that choose by importance ("bvh", "exhaustive") over a few hundred lights of
+// every kind of orientation: their choice must be a probability distribution, sample() must
+// report the probability that pmf() gives (MIS weighs each strategy with the other's), and no
+// light that could light a receiver may have probability zero there (next-event estimation
+// would then miss its light, a bias that no other strategy repays in the path tracer's MIS).
+#include "lights/bvh_light_sampler.h"
+
+#include "core/rng.h"
+#include "geometry/triangle.h"
+#include "lights/diffuse_area_light.h"
+#include "lights/point_light.h"
+#include "lights/spot_light.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace caustica {
+namespace {
+
+Vec3f uniform_direction(Rng &rng) {
+    const float z = 1 - 2 * rng.uniform(), phi = 2 * Pi * rng.uniform();
+    const float r = std::sqrt(std::max(0.f, 1 - z * z));
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+struct ManyLights {
+    std::vector<LightPtr> lights;
+    std::vector<std::shared_ptr<const Triangle>> triangles; // of the first lights
+    std::vector<bool> two_sided;
+
+    // Triangles of random size, place and facing (a fifth two-sided, some meshes with vertex
+    // normals, which can turn a triangle's emitting side), point lamps and spot lights.
+    explicit ManyLights(int count) {
+        Rng rng(7, 11);
+        for (int i = 0; i < count; ++i) {
+            const Vec3f c{20 * rng.uniform() - 10, 20 * rng.uniform() - 10, 20 * rng.uniform() - 10};
+            const float size = 0.05f + 0.5f * rng.uniform();
+            std::vector<Vec3f> p = {c + uniform_direction(rng) * size, c + uniform_direction(rng) * size,
+                                    c + uniform_direction(rng) * size};
+            std::vector<Vec3f> n;
+            if (i % 7 == 0) n = {uniform_direction(rng), uniform_direction(rng), uniform_direction(rng)};
+            auto mesh = std::make_shared<TriangleMesh>(Transform(), i % 3 == 0, std::vector<int>{0, 1, 2}, p, n,
+                                                       std::vector<Vec2f>{});
+            auto triangle = std::make_shared<const Triangle>(mesh, 0);
+            const bool both = i % 5 == 0;
+            lights.push_back(std::make_shared<DiffuseAreaLight>(
+                triangle, std::make_shared<ConstantSpectrum>(0.5f + rng.uniform()), 1.f, both));
+            triangles.push_back(triangle);
+            two_sided.push_back(both);
+        }
+        for (int i = 0; i < count / 10; ++i) {
+            const Vec3f c{20 * rng.uniform() - 10, 20 * rng.uniform() - 10, 20 * rng.uniform() - 10};
+            lights.push_back(std::make_shared<PointLight>(Transform::translate(c),
+                                                          std::make_shared<ConstantSpectrum>(1 + rng.uniform()), 1.f));
+            lights.push_back(std::make_shared<SpotLight>(Transform::translate(c), std::make_shared<ConstantSpectrum>(1.f),
+                                                         1.f, 30.f, 20.f));
+        }
+    }
+};
+
+// Receivers in and around the lights' box, a fifth of them in a medium (no normal).
+std::vector<LightSampleContext> receivers(int count) {
+    Rng rng(3, 5);
+    std::vector<LightSampleContext> r;
+    for (int i = 0; i < count; ++i) {
+        const Vec3f p{24 * rng.uniform() - 12, 24 * rng.uniform() - 12, 24 * rng.uniform() - 12};
+        const Vec3f n = i % 5 == 0 ? Vec3f{} : uniform_direction(rng);
+        r.push_back({p, n, n});
+    }
+    return r;
+}
+
+// The exhaustive sampler's choice is a distribution over the lights. The tree's may fall short
+// of one: a node whose bounds may face the receiver can hold only lights that do not, and a
+// descent into it chooses nothing. Either way, sample() must choose each light as often as pmf()
+// says, and nothing as often as the shortfall.
+template <class Sampler> void expect_a_consistent_distribution(bool may_choose_nothing, int receiver_count, int n) {
+    const ManyLights scene(300);
+    const Sampler sampler(scene.lights);
+    double shortfall = 0;
+    for (const LightSampleContext &ctx : receivers(receiver_count)) {
+        double sum = 0;
+        std::vector<double> pmf;
+        for (const LightPtr &l : scene.lights) {
+            pmf.push_back(sampler.pmf(ctx, l.get()));
+            sum += pmf.back();
+        }
+        if (may_choose_nothing) ASSERT_LE(sum, 1 + 1e-4);
+        else ASSERT_NEAR(sum, 1, 1e-4);
+        shortfall += 1 - sum;
+        // Stratified u: every light gets a run of u as long as its probability (the descent maps
+        // u onto consecutive intervals), so its count is n pmf within a couple of samples, and
+        // each sample reports the light's pmf().
+        std::vector<int> counts(scene.lights.size());
+        int nothing = 0;
+        for (int i = 0; i < n; ++i) {
+            const std::optional<SampledLight> s = sampler.sample(ctx, (i + 0.5f) / n);
+            if (!s) {
+                ++nothing;
+                continue;
+            }
+            size_t k = 0;
+            while (scene.lights[k].get() != s->light) ++k;
+            ASSERT_NEAR(s->pmf, pmf[k], 1e-5 * pmf[k]) << "light " << k;
+            ++counts[k];
+        }
+        for (size_t k = 0; k < counts.size(); ++k)
+            ASSERT_NEAR(counts[k], n * pmf[k], 2.5 + 1e-3 * n * pmf[k]) << "light " << k;
+        ASSERT_NEAR(nothing, n * (1 - sum), 2.5 + 1e-3 * n);
+    }
+    std::printf("mean probability of choosing nothing: %.4f\n", shortfall / receiver_count);
+}
+
+TEST(BVHLightSampler, SampleAndPmfAgree) { expect_a_consistent_distribution<BVHLightSampler>(true, 60, 20000); }
+TEST(ExhaustiveLightSampler, IsADistributionThatSampleAndPmfAgreeOn) {
+    expect_a_consistent_distribution<ExhaustiveLightSampler>(false, 12, 4000);
+}
+
+// Wherever some point of a triangle light emits towards a receiver from outside its tangent
+// plane, the light's probability there is positive: the importance bounds (cones of normals,
+// their unions up the tree, the receiver's cosine) are conservative.
+template <class Sampler> void expect_no_light_left_out() {
+    const ManyLights scene(300);
+    const Sampler sampler(scene.lights);
+    Rng rng(9, 1);
+    int checked = 0;
+    for (const LightSampleContext &ctx : receivers(200)) {
+        for (size_t k = 0; k < scene.triangles.size(); ++k) {
+            bool can_light = false;
+            for (int j = 0; j < 16 && !can_light; ++j) {
+                float b[3];
+                sample_uniform_triangle(rng.uniform2(), b);
+                const Triangle &t = *scene.triangles[k];
+                const Vec3f x = t.mesh().point(0, b), n = t.mesh().normal(0, b);
+                const Vec3f to_receiver = normalize(ctx.p - x);
+                const bool emits = scene.two_sided[k] ? dot(n, to_receiver) != 0 : dot(n, to_receiver) > 0;
+                const bool received = ctx.ns == Vec3f{} || std::abs(dot(ctx.ns, to_receiver)) > 1e-3f;
+                can_light = emits && received;
+            }
+            if (!can_light) continue;
+            ++checked;
+            ASSERT_GT(sampler.pmf(ctx, scene.lights[k].get()), 0.f) << "light " << k;
+        }
+    }
+    EXPECT_GT(checked, 20000);
+}
+
+TEST(BVHLightSampler, NeverLeavesOutALightThatCanLightTheReceiver) { expect_no_light_left_out<BVHLightSampler>(); }
+TEST(ExhaustiveLightSampler, NeverLeavesOutALightThatCanLightTheReceiver) {
+    expect_no_light_left_out<ExhaustiveLightSampler>();
+}
+
+// A union of cones holds every direction of both, and is not much wider than it must be: random
+// cones of every width, each direction drawn within one of them.
+TEST(DirectionCone, UnionHoldsBothCones) {
+    Rng rng(5, 8);
+    int narrow_enough = 0;
+    for (int i = 0; i < 20000; ++i) {
+        DirectionCone c[2];
+        for (DirectionCone &k : c) k = {uniform_direction(rng), std::cos(Pi * rng.uniform() * rng.uniform())};
+        const DirectionCone u = cone_union(c[0], c[1]);
+        for (int j = 0; j < 8; ++j) {
+            // A direction at angle theta <= theta_k from axis k.
+            const DirectionCone &k = c[j % 2];
+            const float theta = std::acos(std::clamp(k.cos_theta, -1.f, 1.f)) * rng.uniform();
+            Vec3f t, b;
+            coordinate_system(k.w, &t, &b);
+            const float phi = 2 * Pi * rng.uniform();
+            const Vec3f w = k.w * std::cos(theta) + (t * std::cos(phi) + b * std::sin(phi)) * std::sin(theta);
+            ASSERT_GE(dot(u.w, w), u.cos_theta - 1e-6f) << "cone " << i;
+        }
+        // The union's half-angle is at most half the spread of the two cones, plus the margin.
+        const float spread = std::acos(std::clamp(c[0].cos_theta, -1.f, 1.f)) +
+                             std::acos(std::clamp(c[1].cos_theta, -1.f, 1.f)) +
+                             std::acos(std::clamp(dot(c[0].w, c[1].w), -1.f, 1.f));
+        narrow_enough += u.cos_theta == -1 || std::acos(u.cos_theta) <= std::max(
+            {spread / 2 + 2e-3f, std::acos(std::clamp(c[0].cos_theta, -1.f, 1.f)),
+             std::acos(std::clamp(c[1].cos_theta, -1.f, 1.f))});
+    }
+    EXPECT_EQ(narrow_enough, 20000);
+}
+
+// The point of the orientation bounds: a floor under a cluster of lamps that face it, with as
+// many above them facing up and as many under the floor facing down, gives all its samples to
+// the cluster that lights it.
+TEST(BVHLightSampler, FavoursTheLightsThatFaceTheReceiver) {
+    std::vector<LightPtr> lights;
+    auto quad = [&](Vec3f c, float facing) {
+        // A small square at c, in the plane z = c.z, emitting towards +z (facing 1) or -z.
+        std::vector<Vec3f> p = {c + Vec3f{-0.1f, -0.1f, 0}, c + Vec3f{0.1f, -0.1f, 0}, c + Vec3f{0.1f, 0.1f, 0}};
+        if (facing < 0) std::swap(p[1], p[2]);
+        auto mesh = std::make_shared<TriangleMesh>(Transform(), false, std::vector<int>{0, 1, 2}, p,
+                                                   std::vector<Vec3f>{}, std::vector<Vec2f>{});
+        lights.push_back(std::make_shared<DiffuseAreaLight>(std::make_shared<const Triangle>(mesh, 0),
+                                                            std::make_shared<ConstantSpectrum>(1.f), 1.f, false));
+    };
+    for (int i = 0; i < 50; ++i) quad({float(i % 10) - 5, float(i / 10) - 2, 5}, -1);  // above, facing down
+    for (int i = 0; i < 50; ++i) quad({float(i % 10) - 5, float(i / 10) - 2, 5.5f}, 1); // above, facing up
+    for (int i = 0; i < 50; ++i) quad({float(i % 10) - 5, float(i / 10) - 2, -5}, -1);  // below, facing down
+    BVHLightSampler sampler(lights);
+    const LightSampleContext floor{{0, 0, 0}, {0, 0, 1}, {0, 0, 1}};
+    double facing = 0, rest = 0;
+    for (size_t i = 0; i < lights.size(); ++i) (i < 50 ? facing : rest) += sampler.pmf(floor, lights[i].get());
+    EXPECT_NEAR(facing + rest, 1, 1e-5);
+    EXPECT_EQ(rest, 0); // each of them faces away from the receiver
+}
+
+} // namespace
+} // namespace caustica
