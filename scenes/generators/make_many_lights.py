@@ -48,7 +48,7 @@ for i in range(200):
     pts = []
     for s, u in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
         pts.append(tuple([x, y, z][k] + h * (s * t[k] + u * b[k]) for k in range(3)))
-    # Winding (0 1 2) faces along t x b = n.
+    # One-sided: it emits to the side its winding gives (t x b = n up to pbrt-v4's rule).
     colour = [0.3 + 0.7 * rand() for _ in range(3)]
     power = 20 + 60 * rand()
     lines.append("AttributeBegin")
