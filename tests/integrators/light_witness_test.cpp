@@ -16,6 +16,12 @@
 // image looked up without pbrt-v4's v flip fails pt with |z| 155 and lt with 122; lt joining the
 // light point to the lens with uv (0, 0) in place of the point's own fails with |z| 141; "power"
 // normalised without the image's mean luminance leaves pt 39% dark (|z| 149).
+// The many-lights hall (scenes/lights/many-lights.pbrt, 400 emissive triangles) in the
+// integrators that choose lights for next-event estimation by the light BVH: pt and sppm weigh the
+// choice against BSDF sampling, bdpt and vcm against the light subpaths' choice by power too.
+// Negative control (one run, then undone): the BVH's sample() reporting its choice 5% likelier
+// than it is (next-event estimation 5% dark) fails pt with |z| 9.4 (2.5% dark overall) and bdpt
+// with 5.4 (1.1%); the right code gave 2.8 and 3.6.
 #include "render_test_support.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +47,11 @@ INSTANTIATE_TEST_SUITE_P(Lights, PbrtWitness,
                                            RenderCase{"lights/emission-image", "bdpt", 64},
                                            RenderCase{"lights/emission-image", "sppm", 256},
                                            RenderCase{"lights/emission-image", "bpm", 256},
-                                           RenderCase{"lights/emission-image", "vcm", 64}),
+                                           RenderCase{"lights/emission-image", "vcm", 64},
+                                           RenderCase{"lights/many-lights", "pt", 64},
+                                           RenderCase{"lights/many-lights", "bdpt", 16},
+                                           RenderCase{"lights/many-lights", "sppm", 64},
+                                           RenderCase{"lights/many-lights", "vcm", 16}),
                          witness_case_name);
 
 } // namespace
