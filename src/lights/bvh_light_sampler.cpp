@@ -67,18 +67,18 @@ int BVHLightSampler::build(std::vector<int> &lights, size_t begin, size_t end, i
 
     // The cheapest of the splits between 12 buckets of centroids along each axis (pbrt-v4's).
     constexpr int Buckets = 12;
+    auto bucket_of = [&](int light, int axis) {
+        const float lo = centroids.lo[axis], extent = centroids.hi[axis] - lo;
+        const float c = bounded_bounds_[size_t(light)].bounds.center()[axis];
+        return std::min(int(Buckets * (c - lo) / extent), Buckets - 1);
+    };
     float best_cost = Infinity;
     int best_axis = -1, best_split = 0;
     for (int axis = 0; axis < 3; ++axis) {
-        const float lo = centroids.lo[axis], extent = centroids.hi[axis] - lo;
-        if (!(extent > 0) || !(diagonal[axis] > 0)) continue;
-        auto bucket_of = [&](int light) {
-            const float c = bounded_bounds_[size_t(light)].bounds.center()[axis];
-            return std::min(int(Buckets * (c - lo) / extent), Buckets - 1);
-        };
+        if (!(centroids.hi[axis] > centroids.lo[axis]) || !(diagonal[axis] > 0)) continue;
         std::array<LightBounds, Buckets> buckets{};
         for (size_t i = begin; i < end; ++i) {
-            LightBounds &b = buckets[size_t(bucket_of(lights[i]))];
+            LightBounds &b = buckets[size_t(bucket_of(lights[i], axis))];
             b = bounds_union(b, bounded_bounds_[size_t(lights[i])]);
         }
         for (int split = 1; split < Buckets; ++split) {
@@ -97,11 +97,7 @@ int BVHLightSampler::build(std::vector<int> &lights, size_t begin, size_t end, i
 
     size_t middle;
     if (best_axis >= 0 && best_cost > 0 && std::isfinite(best_cost)) {
-        const float lo = centroids.lo[best_axis], extent = centroids.hi[best_axis] - lo;
-        auto below = [&](int light) {
-            const float c = bounded_bounds_[size_t(light)].bounds.center()[best_axis];
-            return std::min(int(Buckets * (c - lo) / extent), Buckets - 1) < best_split;
-        };
+        auto below = [&](int light) { return bucket_of(light, best_axis) < best_split; };
         middle = size_t(std::partition(lights.begin() + long(begin), lights.begin() + long(end), below) -
                         lights.begin());
     } else {

@@ -30,9 +30,7 @@ LightBounds LightBounds::make(const Bounds3f &bounds, float phi, const EmissionD
     b.bounds = bounds;
     b.phi = phi;
     b.directions = directions;
-    float radius;
-    bounds.bounding_sphere(&b.centre_, &radius);
-    b.radius2_ = radius * radius;
+    bounds.bounding_sphere(&b.centre_, &b.radius_);
     b.cos_o_ = std::clamp(directions.normals.cos_theta, -1.f, 1.f);
     b.sin_o_ = safe_sqrt(1 - b.cos_o_ * b.cos_o_);
     return b;
@@ -45,7 +43,7 @@ float LightBounds::importance(Vec3f p, Vec3f n) const {
     // no smaller than the bounds' radius (pbrt-v4's clamp, a length, not the radius squared: it
     // depends on the scene's unit, but it keeps the same choice as pbrt-v4 on the same file, and
     // it damps the preference for lamps a hair away, which light receivers nearby only partly).
-    const float d2 = std::max(distance2, std::sqrt(radius2_));
+    const float d2 = std::max(distance2, radius_);
     if (!(d2 > 0)) return phi > 0 ? MaxImportance : 0.f;
     const float inv_distance = distance2 > 0 ? 1 / std::sqrt(distance2) : 0.f;
 
@@ -53,11 +51,11 @@ float LightBounds::importance(Vec3f p, Vec3f n) const {
     // bounds: the bounding sphere's, or where p lies inside that sphere but outside the box, the
     // widest direction to a corner (the box is convex, so a cone narrower than a hemisphere that
     // holds its corners holds it all); every direction when p lies inside the box.
-    const float sin2_b = radius2_ / distance2;
+    const float sin2_b = radius_ * radius_ / distance2;
     float cos_b = -1, sin_b = 0;
     if (sin2_b < 1) {
         cos_b = std::sqrt(1 - sin2_b);
-        sin_b = std::sqrt(radius2_) * inv_distance;
+        sin_b = radius_ * inv_distance;
     } else if (!inside_box(bounds, p)) {
         const Vec3f axis = to_centre * inv_distance;
         float widest = 1;

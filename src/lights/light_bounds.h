@@ -35,7 +35,7 @@ struct LightBounds {
     // What importance() needs of the above, computed once: the bounding sphere, and the normal
     // cone's half-angle.
     Vec3f centre_;
-    float radius2_ = 0;
+    float radius_ = 0;
     float cos_o_ = -1, sin_o_ = 0;
 };
 

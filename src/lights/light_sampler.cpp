@@ -53,7 +53,8 @@ float PowerLightSampler::pmf(const Light *light) const {
 
 ImportanceLightSampler::ImportanceLightSampler(const std::vector<LightPtr> &lights) : by_power_(lights) {
     for (const LightPtr &l : lights) {
-        if (!l->spatial_bounds() || l->spatial_bounds()->empty()) {
+        const std::optional<Bounds3f> bounds = l->spatial_bounds();
+        if (!bounds || bounds->empty()) {
             index_.emplace(l.get(), -1 - int(unbounded_.size()));
             unbounded_.push_back(l.get());
         } else if (const std::optional<LightBounds> b = light_bounds(*l)) {
@@ -65,8 +66,10 @@ ImportanceLightSampler::ImportanceLightSampler(const std::vector<LightPtr> &ligh
 }
 
 // One share for every light at infinity, and one for all bounded lights together.
+int ImportanceLightSampler::shares() const { return int(unbounded_.size()) + (bounded_.empty() ? 0 : 1); }
+
 std::optional<SampledLight> ImportanceLightSampler::sample(const LightSampleContext &ctx, float u) const {
-    const int shares = int(unbounded_.size()) + (bounded_.empty() ? 0 : 1);
+    const int shares = this->shares();
     if (shares == 0) return {};
     const float p_unbounded = float(unbounded_.size()) / float(shares);
     if (u < p_unbounded) {
@@ -82,7 +85,7 @@ std::optional<SampledLight> ImportanceLightSampler::sample(const LightSampleCont
 float ImportanceLightSampler::pmf(const LightSampleContext &ctx, const Light *light) const {
     const auto it = index_.find(light);
     if (it == index_.end()) return 0;
-    const int shares = int(unbounded_.size()) + (bounded_.empty() ? 0 : 1);
+    const int shares = this->shares();
     if (it->second < 0) return 1 / float(shares);
     return pmf_bounded(ctx, it->second) * (1 - float(unbounded_.size()) / float(shares));
 }

@@ -86,6 +86,7 @@ class ImportanceLightSampler : public LightSampler {
     std::vector<LightBounds> bounded_bounds_;
 
   private:
+    int shares() const; // one per unbounded light, one for the bounded ones together
     PowerLightSampler by_power_;
     // Lights without spatial bounds (at infinity). Bounded lights without power are never
     // chosen, as in pbrt-v4: nothing they could send would be seen.
