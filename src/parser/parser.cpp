@@ -466,13 +466,36 @@ class SceneParser {
     }
 
     void set_checked(const Token &d, Transform &ctm, const Transform &t) {
-        // Each transform may be invertible while their product over- or underflows single
-        // precision (Scale 1e-30 twice): its matrix or inverse would then hold infinities and
-        // turn every point it moves into NaN.
-        if (!is_finite(t.matrix()) || !is_finite(t.inverse_matrix()))
-            error(d, d.text + ": the current transformation is not invertible in single "
-                              "precision (its entries or those of its inverse overflow)");
+        // Each transform may be finite while their product overflows single precision (Scale
+        // 1e30 twice): its matrix would then hold infinities and turn every point it moves into
+        // NaN. A product whose inverse overflows (Scale 1e-30 twice) collapses space instead,
+        // as a Scale by zero does (see collapses()).
+        if (!is_finite(t.matrix()))
+            error(d, d.text + ": the current transformation is not finite in single precision "
+                              "(its entries overflow)");
         ctm = t;
+    }
+
+    // pbrt-v4 accepts transformations that collapse space into a plane, a line or a point (a
+    // Scale by zero, a singular ConcatTransform: exporters hide objects that way). Nothing
+    // placed under one can be traced (rays need the inverse), so what needs the inverse is
+    // refused where it is placed: shapes, instances and lights are left out with a warning
+    // (pbrt-v4 gives them NaN inverses and draws nothing of its spheres and instances), the
+    // camera, media and textures are errors.
+    static bool collapses(const Transform &t) { return !is_finite(t.inverse_matrix()); }
+    bool ctm_collapses() const { return collapses(state_.ctm) || collapses(state_.ctm_end); }
+    static std::string collapse_reason() {
+        return "the current transformation is not invertible (a Scale by zero, a singular matrix, or an "
+               "inverse that overflows single precision)";
+    }
+    // Warns and returns true when the directive at d is to be left out.
+    bool left_out_as_collapsed(const Token &d, const std::string &what) {
+        if (!ctm_collapses()) return false;
+        warn(d.location(), collapse_reason() + ": " + what + " is left out");
+        return true;
+    }
+    void require_invertible_ctm(const Token &d) {
+        if (ctm_collapses()) error(d, d.text + ": " + collapse_reason());
     }
 
     bool ctm_moves() const { return !(state_.ctm == state_.ctm_end); }
@@ -559,6 +582,7 @@ class SceneParser {
     void camera(const Token &d) {
         SceneEntity e = entity(d, "camera type");
         require_options_block(d);
+        require_invertible_ctm(d);
         Transform world_from_camera = state_.ctm.inverse();
         named_frames_["camera"] = {world_from_camera, state_.ctm_end.inverse()};
         if (ctm_moves()) desc_.camera.world_from_camera_end = state_.ctm_end.inverse();
@@ -590,9 +614,13 @@ class SceneParser {
         // pbrt lists the matrix column by column (m00 m10 m20 m30 m01 ...), so the translation
         // is in elements 12-14: reading it row-major gives the transpose.
         Matrix4 m = Matrix4::from_row_major(values).transposed();
+        // A singular matrix is kept with a NaN inverse, as pbrt-v4 keeps it (see collapses()).
         std::optional<Matrix4> inv = inverse(m);
-        if (!inv) error(d, d.text + ": the matrix is not invertible");
-        return Transform(m, *inv);
+        if (inv) return Transform(m, *inv);
+        Matrix4 nan;
+        for (auto &row : nan.m)
+            for (float &v : row) v = std::numeric_limits<float>::quiet_NaN();
+        return Transform(m, nan);
     }
 
     void coordinate_system(const Token &d) {
@@ -702,6 +730,7 @@ class SceneParser {
         require_world_block(d);
         LightEntity light;
         static_cast<SceneEntity &>(light) = std::move(e);
+        if (left_out_as_collapsed(d, "the light")) return;
         warn_if_moving(d, "a light");
         light.render_from_object = state_.ctm;
         light.medium = state_.outside_medium;
@@ -747,6 +776,7 @@ class SceneParser {
                              existing.loc.to_string() + ")");
         m.params = std::move(e.params);
         m.loc = e.loc;
+        require_invertible_ctm(d);
         warn_if_moving(d, "a medium");
         m.render_from_object = state_.ctm;
         desc_.media.push_back(std::move(m));
@@ -819,6 +849,7 @@ class SceneParser {
         if (active_instance_ >= 0)
             error(d, "ObjectInstance inside an object definition (ObjectBegin at " +
                          desc_.instances[active_instance_].loc.to_string() + ")");
+        if (left_out_as_collapsed(d, "the instance")) return;
         desc_.instance_uses.push_back({name, AnimatedTransform(state_.ctm, state_.ctm_end), d.location()});
     }
 
@@ -891,8 +922,6 @@ class SceneParser {
 
     void scale(const Token &d) {
         std::vector<double> v = number_arguments(d, 3);
-        if (v[0] == 0 || v[1] == 0 || v[2] == 0)
-            error(d, "Scale by zero: the transform would not be invertible");
         apply(d, Transform::scale(float(v[0]), float(v[1]), float(v[2])));
     }
 
@@ -901,6 +930,7 @@ class SceneParser {
         require_world_block(d);
         ShapeEntity s;
         static_cast<SceneEntity &>(s) = std::move(e);
+        if (left_out_as_collapsed(d, "the shape")) return;
         s.render_from_object = state_.ctm;
         if (ctm_moves()) {
             // pbrt-v4 refuses moving emitters too: light sampling would need the shape's time.
@@ -949,6 +979,7 @@ class SceneParser {
         t.type = std::move(type);
         t.params = std::move(params);
         t.loc = d.location();
+        require_invertible_ctm(d);
         warn_if_moving(d, "a texture's space");
         t.render_from_object = state_.ctm;
         t.name = std::move(name);

@@ -200,5 +200,39 @@ TEST(ParserTransforms, LightsTexturesMediaAndInstancesGetTheCtm) {
     expect_near(d.instance_uses[0].render_from_instance.start.apply_point({1, 1, 1}), {2, 2, 4});
 }
 
+// Exporters hide objects under transforms that collapse space (Cinema 4D's pbrt-v4 exports of
+// transparent-machines hold empty blocks under a matrix whose x column is zero). pbrt-v4 accepts
+// them; what would need the inverse is left out where it is placed.
+TEST(ParserTransforms, ACollapsingTransformIsAcceptedAndWhatItPlacesIsLeftOut) {
+    SceneDescription d = parse("WorldBegin\nAttributeBegin\n"
+                               "ConcatTransform [-0 -0 0 0  0 1 0 0  0 0 -1 0  2637 -70 8 1]\n"
+                               "AttributeBegin\nAttributeEnd\nAttributeEnd\nShape \"sphere\"\n");
+    EXPECT_EQ(d.shapes.size(), 1u);
+    EXPECT_TRUE(d.warnings.empty());
+
+    d = parse("WorldBegin\nAttributeBegin\nScale 1 0 1\nShape \"sphere\"\nLightSource \"point\"\n"
+              "ObjectInstance \"thing\"\nAttributeEnd\nShape \"disk\"\n");
+    ASSERT_EQ(d.shapes.size(), 1u);
+    EXPECT_EQ(d.shapes[0].type, "disk");
+    EXPECT_TRUE(d.lights.empty());
+    EXPECT_TRUE(d.instance_uses.empty());
+    ASSERT_EQ(d.warnings.size(), 3u);
+    for (const std::string &w : d.warnings) EXPECT_NE(w.find("is left out"), std::string::npos) << w;
+}
+
+TEST(ParserTransforms, ACollapsingTransformIsAnErrorForTheCameraMediaAndTextures) {
+    for (const char *text : {"# the camera\nScale 0 1 1\nCamera \"perspective\"\nWorldBegin\n",
+                             "WorldBegin\nScale 0 1 1\nMakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n",
+                             "WorldBegin\nScale 0 1 1\nTexture \"t\" \"float\" \"constant\"\n"}) {
+        try {
+            parse(text);
+            ADD_FAILURE() << text << " parsed";
+        } catch (const InputError &e) {
+            EXPECT_NE(std::string(e.what()).find("not invertible"), std::string::npos) << e.what();
+            EXPECT_EQ(e.location().line, 3) << text;
+        }
+    }
+}
+
 } // namespace
 } // namespace caustica
