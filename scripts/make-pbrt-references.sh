@@ -58,6 +58,7 @@ lights/goniometric 1024
 lights/projection 1024
 lights/portal-window 4096
 lights/emission-image 1024
+integrators/regularize-path 4096
 lights/many-lights 2048
 media/smoke-uniformgrid 8192
 media/smoke-rgbgrid 8192

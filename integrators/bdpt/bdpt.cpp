@@ -23,7 +23,7 @@
 namespace caustica {
 
 BDPT::BDPT(const ParameterDictionary &params, const Scene &scene)
-    : max_depth_(params.get_one_int("maxdepth", 5)) {
+    : max_depth_(params.get_one_int("maxdepth", 5)), regularize_(params.get_one_bool("regularize", false)) {
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
     require_camera_importance(scene, "bidirectional path tracing (bdpt)");
@@ -40,6 +40,7 @@ struct SubpathContext {
     SampledWavelengths &lambda;
     PixelSampleContext &sample;
     float time; // of the camera ray, which the light subpath shares
+    bool regularize; // "regularize": each subpath widens the lobes it meets after a non-specular bounce
 };
 
 // The MIS weight of the emission that the camera subpath path[0, count) collected at a collision
@@ -77,6 +78,7 @@ int random_walk(const SubpathContext &ctx, const Ray &ray, const SampledSpectrum
     const Scene &scene = ctx.scene;
     SubpathWalk walk(scene, mode, ctx.lambda, ctx.sample.sampler, ctx.sample.scratch, ctx.sample.rays, true);
     if (camera_only) walk.allow_reradiation();
+    if (ctx.regularize) walk.regularize_after_non_specular_bounces();
     walk.start(ray, medium, beta, differential);
     // Vertices that count towards max_count: a jump's exit shares its entry's (see after_jump).
     auto counted = [&] { return count - path[count - 1].jumps; };
@@ -384,7 +386,7 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
         SampledSpectrum L(0.f);
         auto camera_ray = scene.generate_camera_ray(cs, lambda, sampler.samples_per_pixel());
         if (camera_ray) {
-            SubpathContext ctx{scene, lambda, sample, camera_ray->ray.time};
+            SubpathContext ctx{scene, lambda, sample, camera_ray->ray.time, regularize_};
             // A path of depth d (bounces) has d + 2 vertices: the camera subpath may need all of
             // them (s = 0), the light subpath all but the lens point (t = 1); each subsurface
             // jump adds one that is not a bounce (PathVertex::after_jump), at most one per bounce.

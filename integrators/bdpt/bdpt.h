@@ -31,7 +31,9 @@ namespace caustica {
 class BDPT final : public Integrator {
   public:
     // Parameters (pbrt-v4 names): "maxdepth" (5), the most scattering events (bounces) of a
-    // connected path. "regularize", "visualizestrategies" and "visualizeweights" are not
+    // connected path; "regularize" (false): each subpath widens the microfacet lobes it meets
+    // after a non-specular bounce (SubpathWalk::regularize_after_non_specular_bounces), as
+    // pbrt-v4's RandomWalk does. "visualizestrategies" and "visualizeweights" are not
     // supported (reported as unused). Throws InputError if the camera does not model
     // importance (orthographic), since light subpaths must be connected to the lens.
     BDPT(const ParameterDictionary &params, const Scene &scene);
@@ -44,6 +46,7 @@ class BDPT final : public Integrator {
 
   private:
     int max_depth_;
+    bool regularize_;
 };
 
 } // namespace caustica

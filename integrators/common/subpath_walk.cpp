@@ -35,6 +35,7 @@ void SubpathWalk::start(const Ray &ray, const Medium *medium, const SampledSpect
     medium_ = medium;
     beta = throughput;
     previous_p_ = ray.o;
+    any_non_specular_bounce_ = false;
 }
 
 WalkEvent SubpathWalk::advance() {
@@ -67,7 +68,8 @@ WalkEvent SubpathWalk::advance() {
             compute_differentials(si_, differential_ ? &*differential_ : nullptr,
                                   scene_.camera_footprint ? &*scene_.camera_footprint : nullptr,
                                   sampler_.samples_per_pixel());
-        const BSDF bsdf = si_.material ? shade(si_, lambda(), bsdf_memory_) : BSDF();
+        BSDF bsdf = si_.material ? shade(si_, lambda(), bsdf_memory_) : BSDF();
+        if (bsdf && regularize_ && any_non_specular_bounce_) bsdf.regularize(bsdf_memory_);
         if (bsdf || si_.area_light) {
             point_ = ScatteringPoint::on_surface(si_, bsdf, medium_);
             return WalkEvent::Vertex;
@@ -101,6 +103,7 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
         if (!(ps.p > 0)) return std::nullopt;
         s.wi = ps.wi;
         s.pdf_fwd = s.pdf_rev = ps.p;
+        any_non_specular_bounce_ = true;
         ray_ = Ray{point_.p, ps.wi, Infinity, point_.time};
         return s;
     }
@@ -129,6 +132,7 @@ std::optional<WalkScatter> SubpathWalk::scatter() {
     if (reverse_densities_) s.pdf_rev = bsdf.pdf(bs->wi, wo, adjoint(mode_));
     s.cos_out = abs_dot(si_.n, bs->wi);
     s.specular = bs->is_specular();
+    any_non_specular_bounce_ |= !s.specular;
     const float inverse_pdf = bs->lane_pdf ? spectral_mis_.inverse_density(*bs->lane_pdf) : 1 / bs->pdf;
     beta *= bs->f * (scattering_cosine(mode_, si_, wo, bs->wi) * inverse_pdf);
     if (!after_jump_) {
@@ -165,6 +169,7 @@ std::optional<WalkScatter> SubpathWalk::reradiate(const Reradiation &reradiation
     if (mode_ == TransportMode::Importance) lambda_ = r->lambda;
     shifted_lambda_ = r->lambda;
     shifted_ = true;
+    any_non_specular_bounce_ = true;
     leave(si_, s.wi);
     return s;
 }
@@ -178,6 +183,7 @@ bool SubpathWalk::jump(const ProfileSubsurfaceMaterial &profile) {
     si_ = exit->si;
     point_ = ScatteringPoint::on_surface(si_, exit->bsdf, medium_);
     after_jump_ = true;
+    any_non_specular_bounce_ = true;
     return true;
 }
 

@@ -86,6 +86,12 @@ class SubpathWalk {
     // camera subpaths gather the re-radiated light alone (path_tracing.h).
     void allow_reradiation();
 
+    // pbrt-v4's "regularize": once the path has scattered non-specularly (off a surface's
+    // non-delta lobe, in a medium, or through a subsurface profile), each BSDF it meets has its
+    // microfacet lobes widened (BSDF::regularize) before it is used, for next-event estimation
+    // and connections as for sampling.
+    void regularize_after_non_specular_bounces() { regularize_ = true; }
+
     // The path leaves along ray, in medium, carrying beta. A camera ray's differential gives the
     // texture footprint at the first surface it reaches (camera/camera_footprint.h); every other
     // vertex takes the camera's approximate footprint.
@@ -169,6 +175,7 @@ class SubpathWalk {
     // Product of eta^2 over the radiance-mode refractions (1 for importance).
     float eta_scale_ = 1;
     bool reradiation_allowed_ = false;
+    bool regularize_ = false, any_non_specular_bounce_ = false;
     // After a re-radiation, every lane carries one wavelength (lambda()).
     bool shifted_ = false;
     SampledWavelengths shifted_lambda_;

@@ -12,7 +12,8 @@ namespace caustica {
 
 class PathTracer final : public Integrator {
   public:
-    // Parameters (pbrt-v4 names): "maxdepth" (5); "regularize" is not supported (reported as unused).
+    // Parameters (pbrt-v4 names): "maxdepth" (5); "regularize" (false): widen the microfacet
+    // lobes met after a non-specular bounce (SubpathWalk::regularize_after_non_specular_bounces).
     explicit PathTracer(const ParameterDictionary &params);
     void render(const Scene &scene, const RenderBudget &budget, RenderStats &stats,
                 const ProgressCallback &progress) override;
@@ -20,6 +21,7 @@ class PathTracer final : public Integrator {
 
   private:
     int max_depth_;
+    bool regularize_;
 };
 
 } // namespace caustica

@@ -14,6 +14,9 @@ class BSDF {
     BSDF(const Frame &frame, const BxDF *bxdf) : frame_(frame), bxdf_(bxdf) {}
 
     explicit operator bool() const { return bxdf_ != nullptr; }
+    // Path regularisation (BxDF::regularized): the BxDF is replaced, never changed in place, so
+    // a BxDF that a material shares between points is left as it is.
+    void regularize(ScratchBuffer &scratch) { bxdf_ = bxdf_->regularized(scratch); }
     BxDFFlags flags() const { return bxdf_->flags(); }
     const Frame &frame() const { return frame_; }
     Vec3f to_local(Vec3f v) const { return frame_.to_local(v); }

@@ -6,6 +6,7 @@
 // and for shading normals (handled by the integrators, Veach 1997 section 5.3).
 #pragma once
 
+#include "core/scratch_buffer.h"
 #include "core/vecmath.h"
 #include "spectral/sampled_spectrum.h"
 
@@ -104,6 +105,15 @@ class BxDF {
     virtual std::optional<BSDFSample> sample_f_as(int lane, Vec3f wo, float uc, Vec2f u, TransportMode mode) const {
         (void)lane;
         return sample_f(wo, uc, u, mode);
+    }
+
+    // The BxDF with its microfacet lobes widened by path regularisation
+    // (TrowbridgeReitzDistribution::regularized), made in scratch; itself when it has none to
+    // widen (diffuse, measured, hair and Disney lobes, as pbrt-v4 leaves its non-microfacet
+    // BxDFs).
+    virtual const BxDF *regularized(ScratchBuffer &scratch) const {
+        (void)scratch;
+        return this;
     }
 
     // A fluorescent surface's wavelength-shifting part (fluorescent_bxdf.h), which the walk

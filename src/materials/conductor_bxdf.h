@@ -26,6 +26,10 @@ class ConductorBxDF final : public BxDF {
         return distribution_.effectively_smooth() ? BxDFSpecularReflection : BxDFGlossyReflection;
     }
 
+    const BxDF *regularized(ScratchBuffer &scratch) const override {
+        return scratch.make<ConductorBxDF>(distribution_.regularized(), eta_, k_, film_);
+    }
+
   private:
     // Reflectance for light meeting the metal (or one microfacet) with cosine cos_i.
     SampledSpectrum fresnel(float cos_i) const;

@@ -61,6 +61,9 @@ class DielectricBxDF final : public BxDF {
     float pdf(Vec3f wo, Vec3f wi, TransportMode mode,
               SampleFlags flags = SampleFlags::All) const override;
     BxDFFlags flags() const override;
+    const DielectricBxDF *regularized(ScratchBuffer &scratch) const override {
+        return scratch.make<DielectricBxDF>(eta_, distribution_.regularized(), film_);
+    }
 
     // Rough and dispersive, with no lane in the index-matched band (where a lane's lobe is a
     // delta, and the hero alone is followed as on a smooth interface).

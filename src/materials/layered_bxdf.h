@@ -62,6 +62,11 @@ class LayeredBxDF final : public BxDF {
     // treat it as non-specular (visible points, merging, connections) while its samples through
     // the coat's delta are flagged specular.
     BxDFFlags flags() const override;
+    // The coat's and the base's lobes widened (pbrt-v4 regularises both).
+    const BxDF *regularized(ScratchBuffer &scratch) const override {
+        return scratch.make<LayeredBxDF>(top_->regularized(scratch), bottom_->regularized(scratch), medium_, max_depth_,
+                                         n_samples_, dispersive_coat_);
+    }
 
   private:
     // Density with which the connection strategy of f() reaches the internal direction w (going

@@ -12,6 +12,11 @@ TrowbridgeReitzDistribution::TrowbridgeReitzDistribution(float alpha_x, float al
     alpha_y_ = std::max(alpha_y_, 1e-4f);
 }
 
+TrowbridgeReitzDistribution TrowbridgeReitzDistribution::regularized() const {
+    auto widen = [](float alpha) { return alpha < 0.3f ? std::clamp(2 * alpha, 0.1f, 0.3f) : alpha; };
+    return {widen(alpha_x_), widen(alpha_y_)};
+}
+
 float TrowbridgeReitzDistribution::D(Vec3f wm) const {
     // The ellipsoid form of GGX, 1 / (pi ax ay ((x/ax)^2 + (y/ay)^2 + z^2)^2) for unit wm, which
     // equals the usual tan^2-based expression but stays finite at grazing normals.

@@ -27,6 +27,13 @@ class TrowbridgeReitzDistribution {
     // Below this alpha the lobe is narrower than float precision resolves reliably in the
     // half-vector Jacobians, so materials switch to the perfectly specular model (as pbrt-v4).
     bool effectively_smooth() const { return std::max(alpha_x_, alpha_y_) < 1e-3f; }
+    // pbrt-v4's path regularisation (its "regularize" integrator parameter, after Kaplanyan and
+    // Dachsbacher 2013, "Path space regularization for holistic and robust light transport"):
+    // each alpha below 0.3 is doubled and kept in [0.1, 0.3], so that a smooth or near-smooth
+    // lobe met after a diffuse bounce becomes glossy enough for light sampling and connections
+    // to find what only chance finds through a delta (a caustic seen by a path tracer). Biased
+    // by design: the blur is the price of the noise it removes.
+    TrowbridgeReitzDistribution regularized() const;
     float alpha_x() const { return alpha_x_; }
     float alpha_y() const { return alpha_y_; }
 

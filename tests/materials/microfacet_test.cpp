@@ -1,5 +1,8 @@
 #include "materials/microfacet.h"
 
+#include "materials/conductor_bxdf.h"
+#include "materials/dielectric_bxdf.h"
+
 #include <gtest/gtest.h>
 
 namespace caustica {
@@ -84,6 +87,35 @@ TEST(Microfacet, SampledNormalsFaceTheViewer) {
             EXPECT_GE(dot(-w, m), -1e-6f);
             EXPECT_NEAR(length(m), 1, 1e-5f);
         }
+}
+
+// pbrt-v4's TrowbridgeReitzDistribution::Regularize: alphas below 0.3 are doubled into [0.1, 0.3].
+TEST(Microfacet, RegularizedWidensNarrowLobesAsPbrtV4Does) {
+    auto expect_alphas = [](TrowbridgeReitzDistribution d, float ax, float ay) {
+        EXPECT_FLOAT_EQ(d.alpha_x(), ax);
+        EXPECT_FLOAT_EQ(d.alpha_y(), ay);
+    };
+    expect_alphas(TrowbridgeReitzDistribution(0, 0).regularized(), 0.1f, 0.1f);
+    expect_alphas(TrowbridgeReitzDistribution(0.04f, 0.12f).regularized(), 0.1f, 0.24f);
+    expect_alphas(TrowbridgeReitzDistribution(0.2f, 0.29f).regularized(), 0.3f, 0.3f);
+    expect_alphas(TrowbridgeReitzDistribution(0.3f, 0.8f).regularized(), 0.3f, 0.8f);
+}
+
+// A smooth interface and a smooth metal turn glossy when regularised; the BxDFs they came from
+// are left as they were (materials may share them).
+TEST(Microfacet, RegularizedBxDFsAreGlossyCopies) {
+    ScratchBuffer scratch;
+    const DielectricBxDF glass(SampledSpectrum(1.5f), TrowbridgeReitzDistribution(0, 0));
+    const ConductorBxDF metal(TrowbridgeReitzDistribution(0, 0), SampledSpectrum(0.2f), SampledSpectrum(3.f));
+    for (const BxDF *smooth : {static_cast<const BxDF *>(&glass), static_cast<const BxDF *>(&metal)}) {
+        ASSERT_TRUE(is_specular(smooth->flags()));
+        const BxDF *widened = smooth->regularized(scratch);
+        EXPECT_NE(widened, smooth);
+        EXPECT_FALSE(is_specular(widened->flags()));
+        EXPECT_TRUE(is_specular(smooth->flags()));
+        const Vec3f wo = normalize(Vec3f(0.3f, 0.1f, 1)), mirror{-wo.x, -wo.y, wo.z};
+        EXPECT_GT(widened->pdf(wo, mirror, TransportMode::Radiance), 0.f);
+    }
 }
 
 } // namespace
