@@ -3,7 +3,7 @@
 # hard-transport scenes (scenes/hard; see tests/data/pbrt-v4/hard/README.md), the procedural
 # textures (scenes/textures), measured materials (scenes/materials), curves, hair, displaced meshes and
 # bilinear patches (scenes/shapes), cameras, lights, heterogeneous media and motion blur (scenes/cameras,
-# scenes/lights, scenes/media, scenes/motion), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
+# scenes/lights, scenes/media, scenes/motion) and path regularisation (scenes/integrators), into tests/data/pbrt-v4/ under the same folder names. Not part of CI and
 # not needed by any test: it needs a pbrt-v4 binary (PBRT, default ../shared/tools/pbrt-v4/pbrt)
 # and oiiotool, and takes about half an hour on 2 cores.
 #
