@@ -83,7 +83,9 @@ TEST(Fluorophore, ReemitsALineAsItsEmissionSpectrum) {
         const float e = nm <= 430 || nm >= 650 ? 0.f : nm <= 500 ? (nm - 430) / 70.f : (650 - nm) / 150.f;
         const float expected = 2 * 0.95f * 0.8f * (370.f / nm) * e / 110;
         EXPECT_NEAR(out[size_t(nm - LambdaMin)], expected, 1e-3f * expected + 1e-9f) << nm;
-        if (nm < 370) EXPECT_EQ(out[size_t(nm - LambdaMin)], 0.f);
+        if (nm < 370) {
+            EXPECT_EQ(out[size_t(nm - LambdaMin)], 0.f);
+        }
     }
     EXPECT_GT(out[size_t(500 - LambdaMin)], 0.f);
 }
