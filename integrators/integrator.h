@@ -106,6 +106,10 @@ class Integrator {
 };
 
 // Creates the integrator named by scene.integrator_name; throws InputError for unknown names.
-std::unique_ptr<Integrator> create_integrator(const Scene &scene);
+// Then warns about the Integrator parameters that neither it nor the scene builder read, unless
+// the caller reports them itself (compare: those that no integrator of the comparison read).
+enum class UnusedParameters { Report, LeaveToCaller };
+std::unique_ptr<Integrator> create_integrator(const Scene &scene,
+                                              UnusedParameters unused = UnusedParameters::Report);
 
 } // namespace caustica

@@ -9,7 +9,9 @@
 
 namespace caustica {
 
-std::unique_ptr<Integrator> create_integrator(const Scene &scene) {
+namespace {
+
+std::unique_ptr<Integrator> make_integrator(const Scene &scene) {
     if (scene.integrator_name == "pt") return std::make_unique<PathTracer>(scene.integrator_params);
     if (scene.integrator_name == "lt")
         return std::make_unique<LightTracer>(scene.integrator_params, scene);
@@ -21,6 +23,14 @@ std::unique_ptr<Integrator> create_integrator(const Scene &scene) {
         return std::make_unique<VCM>(VCM::Mode::BidirectionalPhotonMapping, scene.integrator_params, scene);
     throw InputError(scene.integrator_location,
                      "integrator \"" + scene.integrator_name + "\" is not available in this build");
+}
+
+} // namespace
+
+std::unique_ptr<Integrator> create_integrator(const Scene &scene, UnusedParameters unused) {
+    std::unique_ptr<Integrator> integrator = make_integrator(scene);
+    if (unused == UnusedParameters::Report) scene.integrator_params.report_unused();
+    return integrator;
 }
 
 } // namespace caustica

@@ -27,7 +27,6 @@ BDPT::BDPT(const ParameterDictionary &params, const Scene &scene)
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
     require_camera_importance(scene, "bidirectional path tracing (bdpt)");
-    params.report_unused();
 }
 
 namespace {

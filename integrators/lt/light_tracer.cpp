@@ -20,7 +20,6 @@ LightTracer::LightTracer(const ParameterDictionary &params, const Scene &scene)
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
     require_camera_importance(scene, "the light tracer (lt)");
-    params.report_unused();
     if (!scene.infinite_lights.empty())
         warning(scene.integrator_location,
                 "the light tracer (lt) does not render environment lights seen directly by the "

@@ -12,7 +12,6 @@ PathTracer::PathTracer(const ParameterDictionary &params)
     : max_depth_(params.get_one_int("maxdepth", 5)), regularize_(params.get_one_bool("regularize", false)) {
     if (max_depth_ < 0)
         throw InputError(params.location("maxdepth"), "\"maxdepth\" must not be negative");
-    params.report_unused();
 }
 
 namespace {

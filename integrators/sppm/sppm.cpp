@@ -76,7 +76,6 @@ SPPM::SPPM(const ParameterDictionary &params, const Scene &scene)
                          "\"photonsperiteration\" must be positive (or -1: one per pixel)");
     if (wavelength_groups_ < 1 || wavelength_groups_ > 64)
         throw InputError(params.location("wavelengthgroups"), "\"wavelengthgroups\" must lie in [1, 64]");
-    params.report_unused();
 }
 
 namespace {

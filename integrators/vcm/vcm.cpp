@@ -64,7 +64,6 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
     if (mode == Mode::VertexConnectionMerging && !scene.features.caustic_paths)
         note("vcm: the scene analysis finds no surface that focuses light, so merging adds little "
              "that connections do not already render; bdpt may converge faster here");
-    params.report_unused();
 }
 
 namespace {

@@ -164,7 +164,8 @@ int run_compare(const CompareCommandOptions &options) {
 
     // Everything the user can get wrong is checked before the first render: each integrator is
     // created once (showing the scene's warnings once and each integrator's own), and the
-    // reference must match the rendered size.
+    // reference must match the rendered size. An Integrator parameter is reported unused when no
+    // integrator of the comparison read it (sppm's "photonsperiteration" is no fault of pt's).
     Comparison comparison;
     comparison.scene_path = options.scene_path;
     comparison.date = local_date();
@@ -176,7 +177,9 @@ int run_compare(const CompareCommandOptions &options) {
         if (options.integrators[i].empty()) throw InputError("--integrators: empty integrator name");
         RenderOverrides o = overrides;
         o.integrator = options.integrators[i];
-        RenderSession session = create_render_session(description, o, {.scene = i == 0, .integrator = true});
+        RenderSession session = create_render_session(
+            description, o, {.scene = i == 0, .integrator = true, .unused_integrator_parameters = false});
+        description.integrator.params.add_lookups_of(session.scene->integrator_params);
         const std::string &name = session.scene->integrator_name;
         if (!seen.insert(name).second)
             throw InputError("--integrators: \"" + options.integrators[i] + "\" names " + name + " a second time");
@@ -185,6 +188,7 @@ int run_compare(const CompareCommandOptions &options) {
         comparison.width = bounds.width();
         comparison.height = bounds.height();
     }
+    description.integrator.params.report_unused();
     in_file_order.reset();
     if (!options.reference_path.empty() &&
         (given_reference.width != comparison.width || given_reference.height != comparison.height))

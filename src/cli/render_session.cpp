@@ -51,7 +51,9 @@ RenderSession create_render_session(const SceneDescription &description, const R
         session.scene = build_scene(description, overrides);
     }
     WarningsMuted muted(!warnings.integrator);
-    session.integrator = create_integrator(*session.scene);
+    session.integrator = create_integrator(*session.scene, warnings.unused_integrator_parameters
+                                                               ? UnusedParameters::Report
+                                                               : UnusedParameters::LeaveToCaller);
     return session;
 }
 

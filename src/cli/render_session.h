@@ -41,6 +41,9 @@ struct RenderSession {
 // are switched back on afterwards (the commands run with warnings on).
 struct SessionWarnings {
     bool scene = true, integrator = true;
+    // The Integrator parameters that nothing read (off: the caller reports them, see
+    // create_integrator).
+    bool unused_integrator_parameters = true;
 };
 
 // Throws InputError for anything the description or the overrides get wrong.

@@ -449,6 +449,11 @@ float ParameterDictionary::get_one_float_checked(const std::string &name, float 
     return v;
 }
 
+void ParameterDictionary::add_lookups_of(const ParameterDictionary &copy) const {
+    for (size_t i = 0; i < params_.size() && i < copy.params_.size(); ++i)
+        if (copy.params_[i].looked_up && copy.params_[i].name == params_[i].name) params_[i].looked_up = true;
+}
+
 void ParameterDictionary::report_unused() const {
     for (size_t i = 0; i < params_.size(); ++i) {
         const ParsedParameter &p = params_[i];

@@ -97,6 +97,8 @@ class ParameterDictionary {
     float get_one_float_checked(const std::string &name, float def, float lo, float hi) const;
     // Warn about parameters no create_* function looked at (pbrt would error; we warn, naming it).
     void report_unused() const;
+    // Counts as read what `copy` (a copy of this dictionary, read by someone else) read.
+    void add_lookups_of(const ParameterDictionary &copy) const;
     const std::string &base_directory() const { return base_directory_; }
     // The file that parameter `name` names (`file`, as written), resolved against the scene
     // file's directory when relative. Throws InputError at the parameter when file access is

@@ -377,6 +377,26 @@ TEST(CompareInput, BadInputExitsWithStatusTwoBeforeWritingAnything) {
     EXPECT_FALSE(fs::exists(dir + "/seeded"));
 }
 
+// An Integrator parameter that one integrator of the comparison reads is not reported unused
+// because another ignores it; one that none reads is.
+TEST(CompareInput, ReportsOnlyTheIntegratorParametersNoIntegratorRead) {
+    const std::string dir = scratch_dir("compare-unused");
+    std::string scene = read_text(kCornell);
+    const std::string integrator = "Integrator \"path\"";
+    ASSERT_NE(scene.find(integrator), std::string::npos);
+    scene.replace(scene.find(integrator), integrator.size(),
+                  "Integrator \"sppm\" \"integer photonsperiteration\" [ 2000 ] \"integer frobs\" [ 3 ]");
+    const std::string path = dir + "/sppm-parameters.pbrt";
+    std::ofstream(path) << scene;
+    ASSERT_EQ(run_caustica("compare " + path + " --time 0.05 --resolution 8x8 --integrators pt,sppm --out " + dir +
+                               "/out",
+                           dir + "/stderr.txt"),
+              0);
+    const std::string warnings = read_text(dir + "/stderr.txt");
+    EXPECT_NE(warnings.find("unused parameter \"integer frobs\""), std::string::npos) << warnings;
+    EXPECT_EQ(warnings.find("photonsperiteration"), std::string::npos) << warnings;
+}
+
 // Without --reference no run is the reference: every run's error is the one estimated from its
 // two renders (positive, and what is computed here from their files), the summary says so and
 // reports the agreement of pt's and bdpt's longest runs and the first to reach each error level.
