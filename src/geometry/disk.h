@@ -15,6 +15,8 @@ class Disk : public AnalyticShape {
     Bounds3f bounds() const override;
     // Uniform by area (an affine map scales a plane's area by a constant factor).
     std::optional<ShapeSample> sample(Vec2f u) const override;
+    // A plane has one normal: the one its hits and samples carry.
+    DirectionCone normal_bounds() const override { return {render_normal({0, 0, 1}), 1.f}; }
 
     std::optional<float> nth_hit(Vec3f o, Vec3f d, float t_max, int n) const override;
     SurfaceInteraction interaction(const Ray &ray, float t) const override;

@@ -49,6 +49,12 @@ SampledSpectrum SpotLight::intensity(Vec3f w_light, const SampledWavelengths &la
            intensity_->sample(lambda);
 }
 
+EmissionDirections SpotLight::emission_directions() const {
+    const Vec3f axis = normalize(render_from_light_.apply_vector({0, 0, 1}));
+    const float theta_e = std::acos(cos_falloff_end_) - std::acos(cos_falloff_start_) + 1e-3f;
+    return {{axis, cos_falloff_start_}, std::cos(std::min(theta_e, Pi)), false};
+}
+
 SampledSpectrum SpotLight::phi(const SampledWavelengths &lambda) const {
     // Integral over the sphere of the angular profile: 2 pi (cone + falloff ring).
     return scale_ * intensity_->sample(lambda) * 2 * Pi * (cone_weight() + falloff_weight());

@@ -23,6 +23,10 @@ class SpotLight final : public PointSourceLight {
     std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2,
                                            const SampledWavelengths &lambda) const override;
     void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const override;
+    // pbrt-v4's SpotLight::Bounds: full intensity within the falloff start around the axis, and
+    // light up to theta_e beyond it (the falloff's width), widened by 1e-3 rad so that rounding
+    // never leaves out a direction the falloff still lights.
+    EmissionDirections emission_directions() const override;
 
     // Radiant intensity towards light-space direction w (unit).
     SampledSpectrum intensity(Vec3f w_light, const SampledWavelengths &lambda) const;

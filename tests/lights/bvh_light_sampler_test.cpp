@@ -6,6 +6,7 @@
 #include "lights/bvh_light_sampler.h"
 
 #include "core/rng.h"
+#include "geometry/disk.h"
 #include "geometry/triangle.h"
 #include "lights/diffuse_area_light.h"
 #include "lights/point_light.h"
@@ -28,9 +29,14 @@ struct ManyLights {
     std::vector<LightPtr> lights;
     std::vector<std::shared_ptr<const Triangle>> triangles; // of the first lights
     std::vector<bool> two_sided;
+    // Lights with bounded directions besides the triangles: disks and spot lights, each with its
+    // index in lights.
+    std::vector<std::pair<size_t, std::shared_ptr<const Disk>>> disks;
+    std::vector<std::pair<size_t, std::shared_ptr<const SpotLight>>> spots;
 
     // Triangles of random size, place and facing (a fifth two-sided, some meshes with vertex
-    // normals, which can turn a triangle's emitting side), point lamps and spot lights.
+    // normals, which can turn a triangle's emitting side), point lamps, spot lights and disks of
+    // random facing (some under mirroring transforms, some reversed).
     explicit ManyLights(int count) {
         Rng rng(7, 11);
         for (int i = 0; i < count; ++i) {
@@ -53,8 +59,20 @@ struct ManyLights {
             const Vec3f c{20 * rng.uniform() - 10, 20 * rng.uniform() - 10, 20 * rng.uniform() - 10};
             lights.push_back(std::make_shared<PointLight>(Transform::translate(c),
                                                           std::make_shared<ConstantSpectrum>(1 + rng.uniform()), 1.f));
-            lights.push_back(std::make_shared<SpotLight>(Transform::translate(c), std::make_shared<ConstantSpectrum>(1.f),
-                                                         1.f, 30.f, 20.f));
+            const Transform turn = Transform::rotate(360 * rng.uniform(), uniform_direction(rng));
+            auto spot = std::make_shared<SpotLight>(Transform::translate(c) * turn,
+                                                    std::make_shared<ConstantSpectrum>(1.f), 1.f,
+                                                    10 + 50 * rng.uniform(), 5 * rng.uniform());
+            spots.emplace_back(lights.size(), spot);
+            lights.push_back(spot);
+            const Vec3f d{20 * rng.uniform() - 10, 20 * rng.uniform() - 10, 20 * rng.uniform() - 10};
+            const Transform mirror = i % 2 ? Transform::scale(-1, 1, 1) : Transform();
+            auto disk = std::make_shared<const Disk>(
+                Transform::translate(d) * Transform::rotate(360 * rng.uniform(), uniform_direction(rng)) * mirror,
+                i % 3 == 0, 0.f, 0.1f + 0.4f * rng.uniform(), 0.f, 360.f);
+            disks.emplace_back(lights.size(), disk);
+            lights.push_back(std::make_shared<DiffuseAreaLight>(disk, std::make_shared<ConstantSpectrum>(1.f), 1.f,
+                                                                i % 4 == 0));
         }
     }
 };
@@ -124,7 +142,7 @@ template <class Sampler> void expect_no_light_left_out() {
     const ManyLights scene(300);
     const Sampler sampler(scene.lights);
     Rng rng(9, 1);
-    int checked = 0;
+    int checked = 0, checked_disks = 0, checked_spots = 0;
     for (const LightSampleContext &ctx : receivers(200)) {
         for (size_t k = 0; k < scene.triangles.size(); ++k) {
             bool can_light = false;
@@ -142,8 +160,34 @@ template <class Sampler> void expect_no_light_left_out() {
             ++checked;
             ASSERT_GT(sampler.pmf(ctx, scene.lights[k].get()), 0.f) << "light " << k;
         }
+        const auto received = [&](Vec3f to_receiver) {
+            return ctx.ns == Vec3f{} || std::abs(dot(ctx.ns, to_receiver)) > 1e-3f;
+        };
+        const SampledWavelengths lambda = SampledWavelengths::fixed(550);
+        // A disk lights the receiver where the light itself says some point of it emits that way.
+        for (const auto &[k, disk] : scene.disks) {
+            bool can_light = false;
+            for (int j = 0; j < 16 && !can_light; ++j) {
+                const std::optional<ShapeSample> ss = disk->sample(rng.uniform2());
+                if (!ss) continue;
+                const Vec3f to_receiver = normalize(ctx.p - ss->p);
+                can_light = !scene.lights[k]->L(ss->p, ss->n, ss->uv, to_receiver, lambda).is_black() &&
+                            received(to_receiver);
+            }
+            if (!can_light) continue;
+            ++checked_disks;
+            ASSERT_GT(sampler.pmf(ctx, scene.lights[k].get()), 0.f) << "disk light " << k;
+        }
+        for (const auto &[k, spot] : scene.spots) {
+            const Vec3f to_receiver = normalize(ctx.p - spot->position());
+            if (spot->intensity_towards(to_receiver, lambda).is_black() || !received(to_receiver)) continue;
+            ++checked_spots;
+            ASSERT_GT(sampler.pmf(ctx, scene.lights[k].get()), 0.f) << "spot light " << k;
+        }
     }
     EXPECT_GT(checked, 20000);
+    EXPECT_GT(checked_disks, 500);
+    EXPECT_GT(checked_spots, 100);
 }
 
 TEST(BVHLightSampler, NeverLeavesOutALightThatCanLightTheReceiver) { expect_no_light_left_out<BVHLightSampler>(); }
