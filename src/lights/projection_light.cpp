@@ -33,6 +33,14 @@ ProjectionLight::ProjectionLight(const Transform &render_from_light, RGBImage im
     distribution_ = PiecewiseConstant2D(weights, image_.width, image_.height);
 }
 
+EmissionDirections ProjectionLight::emission_directions() const {
+    const Vec3f axis = normalize(render_from_light_.apply_vector({0, 0, 1}));
+    float cos_widest = 1;
+    for (Vec2f corner : {Vec2f{0, 0}, Vec2f{1, 0}, Vec2f{0, 1}, Vec2f{1, 1}})
+        cos_widest = std::min(cos_widest, dot(axis, normalize(render_from_light_.apply_vector(window_direction(corner)))));
+    return {{axis, cos_widest}, std::cos(1e-3f), false};
+}
+
 Vec3f ProjectionLight::window_direction(Vec2f unit) const {
     const float sx = window_min_.x + unit.x * (window_max_.x - window_min_.x);
     const float sy = window_min_.y + unit.y * (window_max_.y - window_min_.y);

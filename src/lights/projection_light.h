@@ -23,6 +23,10 @@ class ProjectionLight final : public PointSourceLight {
     SampledSpectrum intensity_towards(Vec3f w, const SampledWavelengths &lambda) const override;
     std::optional<LightLeSample> sample_le(Vec2f u1, Vec2f u2, const SampledWavelengths &lambda) const override;
     void pdf_le(const Ray &ray, Vec3f n, float *pdf_pos, float *pdf_dir) const override;
+    // The cone around the axis through the window's corners (the widest directions of the
+    // window: a linear map keeps the window a parallelogram around the axis's image), with a
+    // hard edge (theta_e of 1e-3 rad, for rounding).
+    EmissionDirections emission_directions() const override;
 
     // pbrt-v4's "power" normalisation: the luminous power of unit scale.
     float unit_luminous_power() const;

@@ -10,6 +10,7 @@
 #include "geometry/triangle.h"
 #include "lights/diffuse_area_light.h"
 #include "lights/point_light.h"
+#include "lights/projection_light.h"
 #include "lights/spot_light.h"
 
 #include <gtest/gtest.h>
@@ -32,7 +33,7 @@ struct ManyLights {
     // Lights with bounded directions besides the triangles: disks and spot lights, each with its
     // index in lights.
     std::vector<std::pair<size_t, std::shared_ptr<const Disk>>> disks;
-    std::vector<std::pair<size_t, std::shared_ptr<const SpotLight>>> spots;
+    std::vector<std::pair<size_t, std::shared_ptr<const PointSourceLight>>> spots; // and projectors
 
     // Triangles of random size, place and facing (a fifth two-sided, some meshes with vertex
     // normals, which can turn a triangle's emitting side), point lamps, spot lights and disks of
@@ -65,6 +66,16 @@ struct ManyLights {
                                                     10 + 50 * rng.uniform(), 5 * rng.uniform());
             spots.emplace_back(lights.size(), spot);
             lights.push_back(spot);
+            RGBImage slide;
+            slide.width = 3 + i % 3;
+            slide.height = 2 + i % 2;
+            slide.pixels.assign(size_t(slide.width) * slide.height * 3, 0.5f);
+            const Transform aim = Transform::rotate(360 * rng.uniform(), uniform_direction(rng)) *
+                                  Transform::scale(1, 1 + rng.uniform(), 1);
+            auto projector = std::make_shared<ProjectionLight>(Transform::translate(c) * aim, slide, 1.f,
+                                                               20 + 60 * rng.uniform());
+            spots.emplace_back(lights.size(), projector);
+            lights.push_back(projector);
             const Vec3f d{20 * rng.uniform() - 10, 20 * rng.uniform() - 10, 20 * rng.uniform() - 10};
             const Transform mirror = i % 2 ? Transform::scale(-1, 1, 1) : Transform();
             auto disk = std::make_shared<const Disk>(
@@ -182,7 +193,7 @@ template <class Sampler> void expect_no_light_left_out() {
             const Vec3f to_receiver = normalize(ctx.p - spot->position());
             if (spot->intensity_towards(to_receiver, lambda).is_black() || !received(to_receiver)) continue;
             ++checked_spots;
-            ASSERT_GT(sampler.pmf(ctx, scene.lights[k].get()), 0.f) << "spot light " << k;
+            ASSERT_GT(sampler.pmf(ctx, scene.lights[k].get()), 0.f) << "spot or projection light " << k;
         }
     }
     EXPECT_GT(checked, 20000);
