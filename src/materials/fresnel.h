@@ -35,14 +35,31 @@ inline float fresnel_dielectric(float cos_i, float eta) {
 
 // The same formulas with a complex relative index eta + i k (an absorbing medium on the far
 // side). cos_i is clamped to [0, 1]: conductors are opaque, so light only arrives from outside.
+// Written out in real arithmetic (Born and Wolf 14.2; the form of pbrt-v3's FrConductor): with
+// a^2 + b^2 = |eta^2 - sin^2 theta_i| and a = Re sqrt(eta^2 - sin^2 theta_i),
+//   R_s = (a^2 + b^2 + cos^2 - 2 a cos) / (a^2 + b^2 + cos^2 + 2 a cos),
+//   R_p = R_s (cos^2 (a^2 + b^2) + sin^4 - 2 a cos sin^2) / (cos^2 (a^2 + b^2) + sin^4 + 2 a cos sin^2).
+// std::complex would compile to library calls that handle infinities (C99 Annex G) on every
+// product and quotient. a^2 is (|z| + Re z) / 2 for z = eta^2 - sin^2; where Re z < 0 (metals,
+// k > n) that sum cancels, so it is taken as (Im z)^2 / (2 (|z| - Re z)) instead.
 inline float fresnel_complex(float cos_i, std::complex<float> eta) {
-    using C = std::complex<float>;
     cos_i = clamp(cos_i, 0.f, 1.f);
-    C sin2_t = C(1 - sqr(cos_i)) / (eta * eta);
-    C cos_t = std::sqrt(C(1) - sin2_t);
-    C r_parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    C r_perpendicular = (C(cos_i) - eta * cos_t) / (C(cos_i) + eta * cos_t);
-    return (std::norm(r_parallel) + std::norm(r_perpendicular)) / 2;
+    const float n = eta.real(), k = eta.imag();
+    const float cos2 = sqr(cos_i), sin2 = 1 - cos2;
+    const float re = sqr(n) - sqr(k) - sin2, im = 2 * n * k;
+    const float modulus = std::sqrt(sqr(re) + sqr(im)); // a^2 + b^2
+    const float a2 = re >= 0 ? (modulus + re) / 2 : (modulus > re ? sqr(im) / (2 * (modulus - re)) : 0.f);
+    const float two_a_cos = 2 * std::sqrt(a2) * cos_i;
+    // Both ratios are (x - y) / (x + y) with x, y >= 0: at most 1, and at least 0 but for
+    // rounding where x ~ y (an index near 1, which reflects nothing). Where both vanish (grazing
+    // light at index 1) the interface reflects everything, as fresnel_dielectric says there.
+    const float s_sum = modulus + cos2;
+    if (!(s_sum + two_a_cos > 0)) return 1;
+    const float r_perpendicular = std::max(0.f, (s_sum - two_a_cos) / (s_sum + two_a_cos));
+    const float p_sum = cos2 * modulus + sqr(sin2), p_cross = two_a_cos * sin2;
+    const float r_parallel =
+        p_sum + p_cross > 0 ? r_perpendicular * std::max(0.f, (p_sum - p_cross) / (p_sum + p_cross)) : r_perpendicular;
+    return (r_parallel + r_perpendicular) / 2;
 }
 
 // Conductor reflectance per wavelength from the spectral complex index (eta, k).

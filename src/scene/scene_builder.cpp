@@ -469,6 +469,15 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
                          ? create_default_sampler(int(ov.seed), ov.spp)
                          : create_sampler(d.sampler.type, d.sampler.params, d.sampler.loc, int(ov.seed), ov.spp,
                                           scene->film->resolution());
+    // What pbrt-v4 refuses as unused parameters, named here as for the other directives. Those
+    // that the command line overrode were not left unused by mistake.
+    if (ov.spp > 0) (void)d.sampler.params.get_one_int("pixelsamples", 0);
+    if (!ov.crop_window.empty() || !ov.pixel_bounds.empty()) {
+        (void)d.film.params.get_float_array("cropwindow");
+        (void)d.film.params.get_int_array("pixelbounds");
+    }
+    for (const SceneEntity *e : {&d.filter, &d.film, static_cast<const SceneEntity *>(&d.camera), &d.sampler})
+        e->params.report_unused();
 
     NamedTextures textures;
     create_textures(d, textures);

@@ -74,6 +74,28 @@ TEST(Fresnel, ConductorMatchesClosedFormsAndDielectric) {
     }
 }
 
+// The real-arithmetic conductor formula against the complex one in double precision, over
+// metals (k > n: the branch that avoids cancellation), dielectrics (k = 0) and in between.
+TEST(Fresnel, ConductorAgreesWithComplexArithmeticInDouble) {
+    using C = std::complex<double>;
+    auto reference = [](double cos_i, C eta) {
+        const C cos_t = std::sqrt(C(1) - C(1 - cos_i * cos_i) / (eta * eta));
+        const C r_p = (eta * cos_i - cos_t) / (eta * cos_i + cos_t), r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+        return (std::norm(r_p) + std::norm(r_s)) / 2;
+    };
+    double worst = 0;
+    for (float n : {0.02f, 0.05f, 0.2f, 0.5f, 1.f, 1.5f, 2.5f, 4.f})
+        for (float k : {0.f, 1e-3f, 0.1f, 0.5f, 1.f, 2.4f, 3.9f, 8.f})
+            for (int i = 0; i <= 200; ++i) {
+                const float c = i / 200.f;
+                const double expected = reference(c, C(n, k));
+                const double got = fresnel_complex(c, {n, k});
+                worst = std::max(worst, std::abs(got - expected));
+                ASSERT_NEAR(got, expected, 2e-6) << "n " << n << " k " << k << " cos " << c;
+            }
+    std::printf("largest difference from the complex formula in double: %.2e\n", worst);
+}
+
 TEST(Fresnel, SchlickInterpolatesFromNormalToGrazing) {
     EXPECT_FLOAT_EQ(fresnel_schlick(0.04f, 1), 0.04f);
     EXPECT_FLOAT_EQ(fresnel_schlick(0.04f, 0), 1);
