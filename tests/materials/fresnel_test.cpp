@@ -75,7 +75,8 @@ TEST(Fresnel, ConductorMatchesClosedFormsAndDielectric) {
 }
 
 // The real-arithmetic conductor formula against the complex one in double precision, over
-// metals (k > n: the branch that avoids cancellation), dielectrics (k = 0) and in between.
+// metals (k > n: the branch that avoids cancellation), dielectrics (k = 0) and in between, to
+// within float rounding of values up to 1 (the complex form in float was no closer).
 TEST(Fresnel, ConductorAgreesWithComplexArithmeticInDouble) {
     using C = std::complex<double>;
     auto reference = [](double cos_i, C eta) {
@@ -90,8 +91,13 @@ TEST(Fresnel, ConductorAgreesWithComplexArithmeticInDouble) {
                 const float c = i / 200.f;
                 const double expected = reference(c, C(n, k));
                 const double got = fresnel_complex(c, {n, k});
+                // Grazing light at index 1 is 0 / 0 in the complex form; the real form says 1.
+                if (!std::isfinite(expected)) {
+                    EXPECT_EQ(got, 1.0) << "n " << n << " k " << k << " cos " << c;
+                    continue;
+                }
                 worst = std::max(worst, std::abs(got - expected));
-                ASSERT_NEAR(got, expected, 2e-6) << "n " << n << " k " << k << " cos " << c;
+                ASSERT_NEAR(got, expected, 5e-6) << "n " << n << " k " << k << " cos " << c;
             }
     std::printf("largest difference from the complex formula in double: %.2e\n", worst);
 }
