@@ -26,7 +26,7 @@ DirectionCone cone_union(const DirectionCone &a, const DirectionCone &b) {
     // The spread from a's far edge to b's far edge, halved, about an axis turned from a.w towards
     // b.w by what that half-angle exceeds theta_a.
     // A thousandth of a radian wider, so that rounding never leaves a direction of a or b out.
-    const float theta_o = (theta_a + theta_d + theta_b) / 2 + 1e-3f;
+    const float theta_o = (theta_a + theta_d + theta_b) / 2 + DirectionCone::RoundingMargin;
     if (theta_o >= Pi) return DirectionCone::entire_sphere();
     const float theta_r = (theta_d + theta_b - theta_a) / 2;
     const Vec3f axis = cross(a.w, b.w);

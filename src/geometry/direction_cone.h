@@ -12,6 +12,9 @@ struct DirectionCone {
     float cos_theta = Infinity;
 
     static DirectionCone entire_sphere() { return {{0, 0, 1}, -1.f}; }
+    // The angle (radians) by which bounds on directions are widened, so that float rounding
+    // never leaves out a direction they should hold.
+    static constexpr float RoundingMargin = 1e-3f;
     bool empty() const { return cos_theta == Infinity; }
 };
 

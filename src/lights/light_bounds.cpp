@@ -64,9 +64,9 @@ float LightBounds::importance(Vec3f p, Vec3f n) const {
                                i & 4 ? bounds.hi.z : bounds.lo.z};
             widest = std::min(widest, dot(axis, normalize(corner - p)));
         }
-        // A thousandth of a radian's margin for rounding.
+        // A margin for rounding (DirectionCone::RoundingMargin).
         if (widest > 1e-3f) {
-            cos_b = std::cos(std::acos(widest) + 1e-3f);
+            cos_b = std::cos(std::acos(widest) + DirectionCone::RoundingMargin);
             sin_b = safe_sqrt(1 - cos_b * cos_b);
         }
     }

@@ -38,7 +38,7 @@ EmissionDirections ProjectionLight::emission_directions() const {
     float cos_widest = 1;
     for (Vec2f corner : {Vec2f{0, 0}, Vec2f{1, 0}, Vec2f{0, 1}, Vec2f{1, 1}})
         cos_widest = std::min(cos_widest, dot(axis, normalize(render_from_light_.apply_vector(window_direction(corner)))));
-    return {{axis, cos_widest}, std::cos(1e-3f), false};
+    return {{axis, cos_widest}, std::cos(DirectionCone::RoundingMargin), false};
 }
 
 Vec3f ProjectionLight::window_direction(Vec2f unit) const {

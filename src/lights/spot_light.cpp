@@ -51,7 +51,7 @@ SampledSpectrum SpotLight::intensity(Vec3f w_light, const SampledWavelengths &la
 
 EmissionDirections SpotLight::emission_directions() const {
     const Vec3f axis = normalize(render_from_light_.apply_vector({0, 0, 1}));
-    const float theta_e = std::acos(cos_falloff_end_) - std::acos(cos_falloff_start_) + 1e-3f;
+    const float theta_e = std::acos(cos_falloff_end_) - std::acos(cos_falloff_start_) + DirectionCone::RoundingMargin;
     return {{axis, cos_falloff_start_}, std::cos(std::min(theta_e, Pi)), false};
 }
 
