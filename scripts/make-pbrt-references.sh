@@ -60,6 +60,7 @@ lights/portal-window 4096
 lights/emission-image 1024
 integrators/regularize-path 4096
 lights/many-lights 2048
+lights/invisible-lamps 2048
 media/smoke-uniformgrid 8192
 media/smoke-rgbgrid 8192
 media/ground-fog 8192

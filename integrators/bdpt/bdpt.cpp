@@ -271,8 +271,10 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         sampled.beta = cs->We / cs->pdf;
         if (qs.type == PathVertexType::Light) {
             // The light point itself (s = 1): emission towards the lens, with the cosine at
-            // the light, over the densities of the point.
+            // the light, over the densities of the point. A light that no ray can meet (a delta
+            // light: a point, or an invisible lamp) is not seen by the lens either.
             // A medium emits the same towards every direction, with no cosine.
+            if (qs.is_delta_light()) return c;
             const float cos_light = qs.is_medium_emitter() ? 1.f : abs_dot(qs.ng(), cs->wi);
             L = qs.light->L(qs.p(), qs.ng(), qs.si.uv, cs->wi, ctx.lambda) * (cos_light / qs.pdf_fwd);
         } else {

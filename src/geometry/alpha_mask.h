@@ -30,6 +30,12 @@ class AlphaMask {
         return u <= a;
     }
 
+    // Whether alpha is the constant 0: the surface is nowhere, and no ray ever stops on it.
+    bool removes_everything() const {
+        const float *a = alpha_->constant_value();
+        return a && !(*a > 0);
+    }
+
     // The alpha at a point where a ray stopped, in (0, 1] (see SurfaceInteraction::coverage).
     float coverage(const TextureEvalContext &ctx) const {
         return std::clamp(alpha_->evaluate(ctx), 0x1p-24f, 1.f);

@@ -8,13 +8,14 @@ DiffuseAreaLight::DiffuseAreaLight(std::shared_ptr<const Shape> shape, SpectrumP
                                    float scale, bool two_sided, std::shared_ptr<const AlphaMask> alpha,
                                    std::shared_ptr<const EmissionImage> image)
     : shape_(std::move(shape)),
-      alpha_(std::move(alpha)),
+      alpha_(alpha && !alpha->removes_everything() ? alpha : nullptr),
       image_(std::move(image)),
       area_(shape_->area()),
       uniform_by_area_(shape_->samples_uniformly_by_area()),
       radiance_(std::move(radiance)),
       scale_(scale),
-      two_sided_(two_sided) {}
+      two_sided_(two_sided),
+      invisible_(alpha && alpha->removes_everything()) {}
 
 SampledSpectrum DiffuseAreaLight::phi(const SampledWavelengths &lambda) const {
     // Radiance integrated over the hemisphere (pi) and the area, per emitting side; an image's

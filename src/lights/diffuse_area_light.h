@@ -3,6 +3,13 @@
 // (pbrt-v4's "filename", lights/emission_image.h). A shape with an alpha cut-out emits
 // only where it is there: points that the mask removes are never sampled as emitting, and rays
 // pass them without seeing their emission (geometry/alpha_mask.h).
+//
+// A shape whose alpha is the constant 0 is an invisible lamp, as in pbrt-v4 (kroken's sky dome is
+// one): no ray meets it, yet it lights the scene fully, and is sampled by next-event estimation
+// and by light paths as if it had no alpha. Since no ray can hit it, it is a DeltaPosition light
+// for every strategy's MIS weight, as pbrt-v4 marks it: the strategies that would find it along a
+// ray (a camera path hitting it, a light path's start joined to the lens) take no part, and those
+// that sample it carry the whole estimate, which stays unbiased.
 #pragma once
 
 #include "geometry/alpha_mask.h"
@@ -21,7 +28,7 @@ class DiffuseAreaLight final : public Light {
                      bool two_sided, std::shared_ptr<const AlphaMask> alpha = nullptr,
                      std::shared_ptr<const EmissionImage> image = nullptr);
 
-    LightType type() const override { return LightType::Area; }
+    LightType type() const override { return invisible_ ? LightType::DeltaPosition : LightType::Area; }
     const Spectrum *emission_spectrum() const override { return image_ ? nullptr : radiance_.get(); }
     SampledSpectrum phi(const SampledWavelengths &lambda) const override;
     std::optional<Bounds3f> spatial_bounds() const override {
@@ -56,6 +63,7 @@ class DiffuseAreaLight final : public Light {
     SpectrumPtr radiance_;
     float scale_;
     bool two_sided_;
+    bool invisible_; // alpha is the constant 0 (see the head of this file)
 };
 
 }  // namespace caustica

@@ -2,6 +2,7 @@
 #include "lights/diffuse_area_light.h"
 
 #include "core/rng.h"
+#include "params/constant_textures.h"
 #include "test_disk.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,25 @@ TEST(DiffuseAreaLight, AlphaCutOutEmitsOnlyWhereTheShapeIs) {
         EXPECT_GE(s->ray.o.x, -1e-4f);
     }
     EXPECT_NEAR(started / 4000.0, 0.5, 0.04); // 5 binomial standard deviations
+}
+
+// A shape whose alpha is the constant 0 is pbrt-v4's invisible lamp: a delta-position light
+// (no ray meets it) that emits as if it had no alpha; any other alpha keeps it an area light.
+TEST(DiffuseAreaLight, ConstantZeroAlphaIsAnInvisibleLamp) {
+    auto disk = std::make_shared<TestDisk>(Vec3f(0, 0, 2), Vec3f(0, 0, -1), 1.5f);
+    auto L = std::make_shared<ConstantSpectrum>(2.f);
+    DiffuseAreaLight lamp(disk, L, 1.5f, false, make_alpha_mask(std::make_shared<ConstantFloatTexture>(0.f)));
+    EXPECT_EQ(lamp.type(), LightType::DeltaPosition);
+    const LightSampleContext ctx{{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+    const double E = estimate_irradiance(lamp, ctx, 200000, 12);
+    EXPECT_NEAR(E, on_axis_irradiance(3.0, 1.5, 1.0), 0.015 * on_axis_irradiance(3.0, 1.5, 1.0));
+    Rng rng(5, 5);
+    for (int i = 0; i < 100; ++i) EXPECT_TRUE(lamp.sample_le(rng.uniform2(), rng.uniform2(), some_wavelengths()));
+
+    DiffuseAreaLight half(disk, L, 1.5f, false, make_alpha_mask(std::make_shared<ConstantFloatTexture>(0.5f)));
+    EXPECT_EQ(half.type(), LightType::Area);
+    DiffuseAreaLight cut(disk, L, 1.5f, false, make_alpha_mask(std::make_shared<HalfDiskCut>()));
+    EXPECT_EQ(cut.type(), LightType::Area);
 }
 
 TEST(DiffuseAreaLight, OneSidedEmitsOnlyOnTheNormalSide) {
