@@ -261,30 +261,30 @@ Connection connect(const SubpathContext &ctx, PathVertex *light_vertices, PathVe
         // where that direction images.
         const PathVertex &qs = light_vertices[s - 1];
         if (!qs.connectible() || qs.at_infinity) return c;
-        auto cs = scene.camera->sample_wi(qs.p(), sampler.get_2d(), ctx.lambda, ctx.time);
-        if (!cs || !(cs->pdf > 0)) return c;
+        const Vec2f u_lens = sampler.get_2d();
         sampled = PathVertex{};
         sampled.type = PathVertexType::Camera;
-        sampled.si.p = cs->p_lens;
         sampled.si.time = ctx.time;
         sampled.medium = scene.camera_medium;
-        sampled.beta = cs->We / cs->pdf;
         if (qs.type == PathVertexType::Light) {
-            // The light point itself (s = 1): emission towards the lens, with the cosine at
-            // the light, over the densities of the point. A light that no ray can meet (a delta
-            // light: a point, or an invisible lamp) is not seen by the lens either.
-            // A medium emits the same towards every direction, with no cosine.
-            if (qs.is_delta_light()) return c;
-            const float cos_light = qs.is_medium_emitter() ? 1.f : abs_dot(qs.ng(), cs->wi);
-            L = qs.light->L(qs.p(), qs.ng(), qs.si.uv, cs->wi, ctx.lambda) * (cos_light / qs.pdf_fwd);
+            // The light point itself (s = 1), joined as light tracing joins it.
+            const LightPoint origin{qs.light, qs.p(), qs.ng(), qs.si.uv, qs.si.error_scale, ctx.time, qs.pdf_fwd};
+            const std::optional<StartSeenByLens> seen = join_start_to_lens(scene, origin, u_lens, ctx.lambda, rays);
+            if (!seen) return c;
+            sampled.si.p = seen->p_lens;
+            c.p_raster = seen->p_raster;
+            L = seen->L;
         } else {
-            L = qs.beta * qs.f(cs->wi, TransportMode::Importance) * qs.cosine(cs->wi, TransportMode::Importance);
+            const auto cs = scene.camera->sample_wi(qs.p(), u_lens, ctx.lambda, ctx.time);
+            if (!cs || !(cs->pdf > 0)) return c;
+            sampled.si.p = cs->p_lens;
+            c.p_raster = cs->p_raster;
+            L = qs.beta * qs.f(cs->wi, TransportMode::Importance) * qs.cosine(cs->wi, TransportMode::Importance) *
+                (cs->We / cs->pdf);
+            if (L.is_black()) return c;
+            L *= connection_transmittance(ctx, sampled, qs);
         }
-        L *= sampled.beta;
-        if (L.is_black()) return c;
-        L *= connection_transmittance(ctx, sampled, qs);
         c.splat = true;
-        c.p_raster = cs->p_raster;
     } else if (s == 1) {
         // Sample a point on a light from the camera subpath's end (next-event estimation).
         const PathVertex &pt = camera_vertices[t - 1];

@@ -52,27 +52,30 @@ std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &samp
 
 float light_path_start_pmf(const Scene &scene, const Light &light) { return light_path_sampler(scene).pmf(&light); }
 
-std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const LightPathStart &start, Vec2f u_lens,
-                                                  const SampledWavelengths &lambda, uint64_t &rays) {
-    const LightLeSample &les = start.les;
+LightPoint LightPathStart::origin() const {
     // LightLeSample gives the sampled point only as the emitted ray's origin, already moved off
     // the surface towards the sampled direction (a few ulps): that offset is far below anything
     // visible.
-    const Vec3f p = les.ray.o;
-    auto cs = scene.camera->sample_wi(p, u_lens, lambda, les.ray.time);
+    return {light, les.ray.o, les.n, les.uv, les.error_scale, les.ray.time, pmf * les.pdf_pos};
+}
+
+std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const LightPoint &start, Vec2f u_lens,
+                                                  const SampledWavelengths &lambda, uint64_t &rays) {
+    if (is_delta_light(start.light->type())) return std::nullopt;
+    auto cs = scene.camera->sample_wi(start.p, u_lens, lambda, start.time);
     if (!cs || !(cs->pdf > 0)) return std::nullopt;
-    SampledSpectrum Le = start.light->L(p, les.n, les.uv, cs->wi, lambda);
+    SampledSpectrum Le = start.light->L(start.p, start.n, start.uv, cs->wi, lambda);
     if (Le.is_black()) return std::nullopt;
-    // A point in a medium has no cosine: its Le is sigma_a Le per unit length, and pdf_pos is
-    // per unit volume.
-    const float cos_light = les.n == Vec3f{} ? 1.f : abs_dot(les.n, cs->wi);
-    SampledSpectrum L = Le * cs->We * (cos_light / (start.pmf * les.pdf_pos * cs->pdf));
+    // A point in a medium has no cosine: its Le is sigma_a Le per unit length, and its density
+    // is per unit volume.
+    const float cos_light = start.n == Vec3f{} ? 1.f : abs_dot(start.n, cs->wi);
+    SampledSpectrum L = Le * cs->We * (cos_light / (start.pdf * cs->pdf));
     if (L.is_black()) return std::nullopt;
     // Traced from the lens (in the camera's medium) towards the light point: when a two-sided
     // light is seen from the side opposite to the sampled emission direction, p lies on the
     // wrong side and a ray spawned from it would start on the emitter; spawn_ray_to moves the
     // target to the lens's side and stops short of it, whichever side p is on.
-    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, 0, p, les.n, les.error_scale, les.ray.time),
+    L *= transmittance(scene, spawn_ray_to(cs->p_lens, Vec3f{}, 0, start.p, start.n, start.error_scale, start.time),
                        scene.camera_medium, lambda, rays);
     if (L.is_black()) return std::nullopt;
     return StartSeenByLens{cs->p_raster, cs->p_lens, cs->wi, cos_light, L};

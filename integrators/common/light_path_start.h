@@ -27,6 +27,19 @@ struct LightPathStart {
     bool at_infinity() const {
         return light->type() == LightType::Infinite || light->type() == LightType::DeltaDirection;
     }
+    struct LightPoint origin() const;
+};
+
+// A point where a light subpath starts, on a light or in an emissive medium, and the density of
+// choosing it (the light's choice times the position's density, per area or per volume).
+struct LightPoint {
+    const Light *light = nullptr;
+    Vec3f p;
+    Vec3f n;                // zero in a medium
+    Vec2f uv;               // on a surface light, on which its radiance may depend
+    float error_scale = 0;  // p's, as SurfaceInteraction::error_scale
+    float time = 0;
+    float pdf = 0;
 };
 
 // Draws the light or emissive medium (lights/medium_emitter.h), chosen by power (one sampler
@@ -44,22 +57,23 @@ std::optional<LightPathStart> start_light_path(const Scene &scene, Sampler &samp
 float light_path_start_pmf(const Scene &scene, const Light &light);
 
 // The start on an area light or in an emissive medium, joined to a lens point sampled with
-// u_lens (the s = 1, t = 1 strategy): the emission that the camera sees directly, which light
-// tracing renders with low variance where a light covers part of a pixel (its edges, and lights
-// seen at grazing angles) and a camera ray hits or misses it.
+// u_lens (the s = 1, t = 1 strategy of lt, bdpt and vcm): the emission that the camera sees
+// directly, which light tracing renders with low variance where a light covers part of a pixel
+// (its edges, and lights seen at grazing angles) and a camera ray hits or misses it.
 struct StartSeenByLens {
     Vec2f p_raster;    // where it lands on the film
     Vec3f p_lens;
     Vec3f wi;          // the unit direction from the light point to the lens
     float cos_light;   // |cos| between the light's normal and the direction to the lens; 1 in a medium
-    // Le |cos_light| We T / (pmf pdf_pos pdf_lens), with pdf_lens as a solid angle at the light
-    // point and T the transmittance to the lens; unweighted.
+    // Le |cos_light| We T / (pdf pdf_lens), with pdf the start's (LightPoint::pdf), pdf_lens as
+    // a solid angle at the light point and T the transmittance to the lens; unweighted.
     SampledSpectrum L;
 };
 
-// Empty when the lens cannot be sampled from the start or nothing arrives there; rays counts the
-// transmittance rays.
-std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const LightPathStart &start, Vec2f u_lens,
+// Empty when the lens cannot be sampled from the start or nothing arrives there, and for delta
+// lights: a light that no ray can meet (a point, an invisible lamp) is not seen by the lens
+// either. rays counts the transmittance rays.
+std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const LightPoint &start, Vec2f u_lens,
                                                   const SampledWavelengths &lambda, uint64_t &rays);
 
 } // namespace caustica

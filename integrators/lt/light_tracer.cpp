@@ -90,7 +90,7 @@ void trace_light_path(const LightPathContext &ctx) {
     const bool from_medium = start->light->type() == LightType::Volume;
     int depth = from_medium ? 1 : 0;
     if ((start->light->type() == LightType::Area || from_medium) && depth <= ctx.max_depth)
-        if (auto seen = join_start_to_lens(scene, *start, sampler.get_2d(), lambda, ctx.sample.rays))
+        if (auto seen = join_start_to_lens(scene, start->origin(), sampler.get_2d(), lambda, ctx.sample.rays))
             splat(ctx, seen->p_raster, seen->L, lambda);
 
     // The emitted flux is kept apart from the walk's throughput, so that Russian roulette sees

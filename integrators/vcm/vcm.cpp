@@ -219,7 +219,7 @@ void connect_to_camera(const LightPathContext &ctx, const LightVertex &v, const 
 void connect_start_to_camera(const LightPathContext &ctx, const LightPathStart &start,
                              const SampledWavelengths &lambda, Vec2f u_lens) {
     const Scene &scene = ctx.it.scene;
-    const std::optional<StartSeenByLens> seen = join_start_to_lens(scene, start, u_lens, lambda, ctx.pixel.rays);
+    const std::optional<StartSeenByLens> seen = join_start_to_lens(scene, start.origin(), u_lens, lambda, ctx.pixel.rays);
     if (!seen) return;
     const float camera_pdf_a =
         camera_area_density(ctx.it, start.les.ray.o, seen->p_lens, seen->wi, seen->cos_light, start.les.ray.time);
