@@ -18,16 +18,17 @@ FilterSampler::FilterSampler(const Filter &filter)
             f_[size_t(y) * nx_ + x] = filter.evaluate(p);
         }
     distribution_ = PiecewiseConstant2D(f_, nx_, ny_);
+    // The density of a cell is its |f| over the integral of |f| over the support, so f / pdf is
+    // that integral, with f's sign, in every cell.
+    abs_integral_ = distribution_.integral() * 4 * radius_.x * radius_.y;
 }
 
 FilterSample FilterSampler::sample(Vec2f u) const {
     Vec2f p01 = distribution_.sample(u, nullptr);
-    // The density and the table value are both taken from the cell containing p01, so that
-    // f / pdf is exactly the same constant (up to sign) for every sample.
-    float pdf = distribution_.pdf(p01) / (4 * radius_.x * radius_.y);
     int x = clamp(int(p01.x * nx_), 0, nx_ - 1), y = clamp(int(p01.y * ny_), 0, ny_ - 1);
+    const float f = f_[size_t(y) * nx_ + x];
     Vec2f p{lerp(p01.x, -radius_.x, radius_.x), lerp(p01.y, -radius_.y, radius_.y)};
-    return {p, pdf > 0 ? f_[size_t(y) * nx_ + x] / pdf : 0.f};
+    return {p, f > 0 ? abs_integral_ : (f < 0 ? -abs_integral_ : 0.f)};
 }
 
 // ---- Box ----

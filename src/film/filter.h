@@ -55,6 +55,7 @@ class FilterSampler {
     int nx_ = 0, ny_ = 0;
     std::vector<float> f_;
     PiecewiseConstant2D distribution_;
+    float abs_integral_ = 0; // of |f| over the support: f / pdf up to sign
 };
 
 // Constant over [-r, r]^2 (radius 0.5: each sample counts for its pixel only).
