@@ -14,6 +14,18 @@ class Sampler;
 class Scene;
 class SampledWavelengths;
 
+// A point where a light subpath starts, on a light or in an emissive medium, and the density of
+// choosing it (the light's choice times the position's density, per area or per volume).
+struct LightPoint {
+    const Light *light = nullptr;
+    Vec3f p;
+    Vec3f n;                // zero in a medium
+    Vec2f uv;               // on a surface light, on which its radiance may depend
+    float error_scale = 0;  // p's, as SurfaceInteraction::error_scale
+    float time = 0;
+    float pdf = 0;
+};
+
 struct LightPathStart {
     const Light *light = nullptr;
     float pmf = 0;        // the probability of choosing the light
@@ -27,19 +39,7 @@ struct LightPathStart {
     bool at_infinity() const {
         return light->type() == LightType::Infinite || light->type() == LightType::DeltaDirection;
     }
-    struct LightPoint origin() const;
-};
-
-// A point where a light subpath starts, on a light or in an emissive medium, and the density of
-// choosing it (the light's choice times the position's density, per area or per volume).
-struct LightPoint {
-    const Light *light = nullptr;
-    Vec3f p;
-    Vec3f n;                // zero in a medium
-    Vec2f uv;               // on a surface light, on which its radiance may depend
-    float error_scale = 0;  // p's, as SurfaceInteraction::error_scale
-    float time = 0;
-    float pdf = 0;
+    LightPoint origin() const;
 };
 
 // Draws the light or emissive medium (lights/medium_emitter.h), chosen by power (one sampler
