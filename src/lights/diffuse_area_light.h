@@ -4,7 +4,7 @@
 // only where it is there: points that the mask removes are never sampled as emitting, and rays
 // pass them without seeing their emission (geometry/alpha_mask.h).
 //
-// A shape whose alpha is the constant 0 is an invisible lamp, as in pbrt-v4 (kroken's sky dome is
+// A shape whose alpha is the constant 0 is an invisible lamp, as in pbrt-v4 (kroken's sun is
 // one): no ray meets it, yet it lights the scene fully, and is sampled by next-event estimation
 // and by light paths as if it had no alpha. Since no ray can hit it, it is a DeltaPosition light
 // for every strategy's MIS weight, as pbrt-v4 marks it: the strategies that would find it along a
