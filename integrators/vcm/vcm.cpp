@@ -15,6 +15,7 @@
 #include "integrators/common/path_tracing.h"
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/transmittance.h"
+#include "integrators/vcm/light_path_store.h"
 #include "integrators/vcm/light_vertex.h"
 #include "integrators/vcm/vcm_mis.h"
 #include "integrators/common/wavelength_groups.h"
@@ -87,11 +88,8 @@ struct Iteration {
     float time; // of every path of the iteration (IterationRenderer::time)
 };
 
-// A light subpath's vertices, in the storage of the thread that traced it.
-struct StoredPath {
-    const std::vector<LightVertex> *vertices = nullptr;
-    uint32_t begin = 0, count = 0;
-};
+// A light subpath's vertices, in the store of the thread that traced it (light_path_store.h).
+using StoredPath = std::span<const LightVertex>;
 
 // The photons of one wavelength group, either those on surfaces or those in media: the two are
 // never merged with each other (a surface camera vertex gathers over a disk, a medium one over a
@@ -254,12 +252,13 @@ SubpathMis light_start_mis(const Scene &scene, const VcmWeights &w, const LightP
                                    start.at_infinity() ? 1.f : start.cos_origin, !is_delta_light(light.type()));
 }
 
-// Traces the light subpath of one pixel with its group's wavelengths, appending its
-// non-specular vertices to `store` and splatting their connections to the lens.
-void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, std::vector<LightVertex> &store) {
+// Traces the light subpath of one pixel with its group's wavelengths, keeping its non-specular
+// vertices as `store`'s current path and splatting their connections to the lens.
+void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, LightPathStore &store) {
     const Iteration &it = ctx.it;
     const Scene &scene = it.scene;
     Sampler &sampler = ctx.pixel.sampler;
+    store.start_path();
     const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda, it.time);
     if (!start) return;
     const Light &light = *start->light;
@@ -558,9 +557,7 @@ SampledSpectrum complete_at(const CameraPathContext &ctx, const CameraVertex &z)
     SampledSpectrum L(0.f);
     if (ctx.it.use_vc) {
         L += sample_light(ctx, z);
-        const StoredPath &light_path = ctx.light_path;
-        for (uint32_t i = 0; i < light_path.count; ++i) {
-            const LightVertex &v = (*light_path.vertices)[light_path.begin + i];
+        for (const LightVertex &v : ctx.light_path) {
             if (v.path_length + z.path_length > ctx.it.max_depth) break;
             L += v.medium_start ? connect_to_medium_start(ctx, z, v) : connect(ctx, z, v);
         }
@@ -715,10 +712,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         medium_photons.emplace_back(photon_search_, photon_blocks);
     }
     // Light vertices are kept through the iteration only for vcm's connections, and not when
-    // they are traced again instead ("lightvertices" "retrace"); otherwise each thread's vector
+    // they are traced again instead ("lightvertices" "retrace"); otherwise each thread's store
     // holds one path at a time.
     const bool keep_light_vertices = use_vc && !retrace_light_paths_;
-    tbb::enumerable_thread_specific<std::vector<LightVertex>> light_vertices;
+    tbb::enumerable_thread_specific<LightPathStore> light_vertices;
     std::vector<StoredPath> light_paths(keep_light_vertices ? pixel_count : 0);
     // One light path per pixel per completed iteration: a resumed render counts those of the
     // iterations it continues from.
@@ -753,15 +750,13 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         bool completed = renderer.for_each_pixel_in_order(iteration, kLightPathDimension, groups.pixels_by_group(),
                                                           [&](Vec2i, size_t index, IterationPixelContext &pixel) {
             const int g = groups.group_of_pixel(index);
-            std::vector<LightVertex> &store = light_vertices.local();
+            LightPathStore &store = light_vertices.local();
             if (!keep_light_vertices) store.clear();
-            const size_t begin = store.size();
             ScratchBuffer &bsdf_memory = keep_light_vertices ? pixel.iteration_scratch : pixel.sample_scratch;
             trace_light_path(LightPathContext{it, pixel, it.weights[g], bsdf_memory, true}, groups.wavelengths(g),
                              store);
-            if (keep_light_vertices)
-                light_paths[index] = StoredPath{&store, uint32_t(begin), uint32_t(store.size() - begin)};
-            add_photons(std::span(store).subspan(begin), groups.wavelengths(g), surface_photons[g], medium_photons[g]);
+            if (keep_light_vertices) light_paths[index] = store.path();
+            add_photons(store.path(), groups.wavelengths(g), surface_photons[g], medium_photons[g]);
             ++traced;
         });
         light_paths_traced_ = traced;
@@ -775,7 +770,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         });
         uint64_t stored = 0;
         if (keep_light_vertices)
-            for (const std::vector<LightVertex> &store : light_vertices) stored += store.size();
+            for (const LightPathStore &store : light_vertices) stored += store.size();
         else
             for (int g = 0; g < groups.count(); ++g) stored += surface_photons[g].size() + medium_photons[g].size();
         stats.stored_light_vertices = std::max<uint64_t>(stats.stored_light_vertices, stored);
@@ -792,13 +787,13 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             } else if (use_vc) {
                 // The pixel's light path of pass 1 again, from its own random numbers (its BSDFs
                 // in this sample's memory), then back to the camera path's.
-                std::vector<LightVertex> &retraced = light_vertices.local();
+                LightPathStore &retraced = light_vertices.local();
                 retraced.clear();
                 ctx.sampler.start_pixel_sample(pixel, iteration, kLightPathDimension);
                 trace_light_path(LightPathContext{it, ctx, it.weights[g], ctx.sample_scratch, false},
                                  groups.wavelengths(g), retraced);
                 ctx.sampler.start_pixel_sample(pixel, iteration, 0);
-                light_path = StoredPath{&retraced, 0, uint32_t(retraced.size())};
+                light_path = retraced.path();
             }
             SampledWavelengths lambda = groups.wavelengths(g);
             const SampledWavelengths group_lambda = lambda;
