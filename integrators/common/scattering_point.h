@@ -13,31 +13,37 @@
 namespace caustica {
 
 struct ScatteringPoint {
+    // Ordered so that no padding is needed: vcm keeps hundreds of thousands of these.
     Vec3f p;
-    Vec3f ng, ns;       // geometric and shading normals; zero in a medium
+    Vec3f ng;           // geometric normal; zero in a medium
     Vec3f wo;           // towards the previous vertex of the subpath
-    BSDF bsdf;          // surface points
+    float time = 0;     // the path's time (geometry/ray.h), for the rays that leave or join it
+    // Surface points. Its frame's z is the shading normal (ns()), which is not kept twice.
+    BSDF bsdf;
     const Medium *medium = nullptr; // medium points: the medium the point lies in
     // Surface points: the media on the side ng points to and on the other (the medium the path
     // arrived in on both, unless the surface is a transition between media).
     const Medium *medium_front = nullptr, *medium_back = nullptr;
-    float time = 0;     // the path's time (geometry/ray.h), for the rays that leave or join it
     float coverage = 1; // surface points: SurfaceInteraction::coverage
     float error_scale = 0; // surface points: SurfaceInteraction::error_scale
 
     // The surface hit si, with its BSDF, reached by a path travelling in `arrived_in`: the media
     // on its two sides follow from the hit's medium interface (medium_after).
     static ScatteringPoint on_surface(const SurfaceInteraction &si, const BSDF &bsdf, const Medium *arrived_in) {
-        return ScatteringPoint{si.p, si.n, si.shading.n, si.wo, bsdf, nullptr, medium_after(si, si.n, arrived_in),
-                               medium_after(si, -si.n, arrived_in), si.time, si.coverage, si.error_scale};
+        return ScatteringPoint{si.p, si.n, si.wo, si.time, bsdf, nullptr, medium_after(si, si.n, arrived_in),
+                               medium_after(si, -si.n, arrived_in), si.coverage, si.error_scale};
     }
     // The scattering event at `distance` along ray inside `medium`.
     static ScatteringPoint in_medium_along(const Ray &ray, float distance, const Medium *medium) {
         const Vec3f wo = -normalize(ray.d);
-        return ScatteringPoint{ray.o - wo * distance, Vec3f{}, Vec3f{}, wo, BSDF(), medium, medium, medium, ray.time};
+        return ScatteringPoint{ray.o - wo * distance, Vec3f{}, wo, ray.time, BSDF(), medium, medium, medium};
     }
 
     bool in_medium() const { return medium != nullptr; }
+
+    // The shading normal of a surface point with a BSDF (every material builds its BSDF's frame
+    // around SurfaceInteraction::shading.n); zero in a medium.
+    Vec3f ns() const { return in_medium() ? Vec3f{} : bsdf.frame().z; }
 
     // The medium a ray leaving the point in direction w travels through.
     const Medium *medium_towards(Vec3f w) const {
@@ -52,8 +58,8 @@ struct ScatteringPoint {
     // |wi.ns|; for importance, with the adjoint shading-normal correction (Veach 1997, 5.3).
     SampledSpectrum f(Vec3f wi, TransportMode mode) const {
         if (in_medium()) return SampledSpectrum(medium->phase().p(wo, wi));
-        if (mode == TransportMode::Radiance) return bsdf.f(wo, wi, mode) * abs_dot(wi, ns);
-        return bsdf.f(wo, wi, mode) * importance_cosine(ng, ns, wo, wi);
+        if (mode == TransportMode::Radiance) return bsdf.f(wo, wi, mode) * abs_dot(wi, ns());
+        return bsdf.f(wo, wi, mode) * importance_cosine(ng, ns(), wo, wi);
     }
 
     // Solid-angle density of sampling `to` from `from` in the given transport mode.
@@ -77,7 +83,7 @@ struct ScatteringPoint {
         }
         const BxDFEvaluation e = bsdf.evaluate(wo, w, mode);
         if (e.f.is_black()) return {};
-        const float cosine = mode == TransportMode::Radiance ? abs_dot(w, ns) : importance_cosine(ng, ns, wo, w);
+        const float cosine = mode == TransportMode::Radiance ? abs_dot(w, ns()) : importance_cosine(ng, ns(), wo, w);
         Connection c{e.f * cosine, e.pdf_forward, e.pdf_reverse};
         if (c.f.is_black()) return {};
         return c;

@@ -25,8 +25,9 @@
 namespace caustica {
 
 struct LightVertex {
+    SampledSpectrum beta;  // light subpath throughput, emitted flux included (first: its 16-byte
+                           // alignment would otherwise pad the record)
     ScatteringPoint point; // bsdf in the iteration's scratch memory
-    SampledSpectrum beta;  // light subpath throughput, emitted flux included
     float d_vcm, d_vc, d_vm;
     uint16_t path_length;  // segments from the light to this vertex
     bool secondary_terminated;
@@ -56,5 +57,6 @@ struct Photon {
     SampledSpectrum beta() const { return {beta_values[0], beta_values[1], beta_values[2], beta_values[3]}; }
 };
 static_assert(sizeof(Photon) == 32, "photons are kept compact: see the comment above");
+static_assert(sizeof(LightVertex) <= 160, "vcm keeps one for every light vertex of an iteration");
 
 } // namespace caustica

@@ -242,7 +242,7 @@ SubpathMis light_start_mis(const Scene &scene, const VcmWeights &w, const LightP
                            const ScatteringPoint &first) {
     const Light &light = *start.light;
     const LightLeSample &les = start.les;
-    const LightSampleContext receiver{first.p, first.ng, first.ns};
+    const LightSampleContext receiver{first.p, first.ng, first.ns()};
     float direct_pdf = start.pmf * les.pdf_pos;
     if (light.type() != LightType::Volume) {
         const float pdf_li = light.type() == LightType::Infinite ? light.pdf_li(receiver, -les.ray.d) : 0.f;
@@ -280,8 +280,9 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, Li
     if (medium_start) {
         path_length = 1;
         start_sigma = mean_extinction(*light.medium(), les.ray.o, lambda);
-        LightVertex v{ScatteringPoint::in_medium_along(Ray{les.ray.o, les.ray.d, Infinity, it.time}, 0, light.medium()),
-                      les.L / (start->pmf * les.pdf_pos), 0, 0, 0, 1, lambda.secondary_terminated()};
+        LightVertex v{les.L / (start->pmf * les.pdf_pos),
+                      ScatteringPoint::in_medium_along(Ray{les.ray.o, les.ray.d, Infinity, it.time}, 0, light.medium()),
+                      0, 0, 0, 1, lambda.secondary_terminated()};
         v.medium_start = true;
         store.push_back(v);
     }
@@ -310,7 +311,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, Li
         // The vertex, then the exit of a profile solid that its sampled direction enters.
         while (true) {
             if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
-                const LightVertex v{point, start->flux * walk.beta, m.d_vcm, m.d_vc, m.d_vm, uint16_t(path_length),
+                const LightVertex v{start->flux * walk.beta, point, m.d_vcm, m.d_vc, m.d_vm, uint16_t(path_length),
                                     lambda.secondary_terminated(), walk.after_jump()};
                 store.push_back(v);
                 if (it.use_vc) {
@@ -380,7 +381,7 @@ SampledSpectrum sample_light(const CameraPathContext &ctx, const CameraVertex &z
     const Scene &scene = ctx.it.scene;
     const ScatteringPoint &point = z.point;
     Sampler &sampler = ctx.pixel.sampler;
-    const LightSampleContext receiver{point.p, point.ng, point.ns};
+    const LightSampleContext receiver{point.p, point.ng, point.ns()};
     auto chosen = scene.light_sampler->sample(receiver, sampler.get_1d());
     Vec2f u = sampler.get_2d();
     if (!chosen) return {};
@@ -497,7 +498,7 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
         const float w_camera = z.m.merged(camera_rev_pdf, here);
         // Photon density is flux per unit of geometric area; the shading-normal BSDF turns it
         // into radiance with |wi.ns| / |wi.ng| (the adjoint correction, Veach 1997, 5.3).
-        const float shading = abs_dot(wi, point.ns) / cos_ng;
+        const float shading = abs_dot(wi, point.ns()) / cos_ng;
         sum += in_group_measure(e.f * photon.beta() * (shading / (w_light + 1 + w_camera)),
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,
                                 ctx.hero_scale);
@@ -671,7 +672,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
             const std::optional<WalkScatter> s = walk.scatter();
             if (!s) return L;
             if (walk.reradiated())
-                return L + in_group_measure(reradiated_beyond(scene, walk, LightSampleContext{point.p, point.ng, point.ns},
+                return L + in_group_measure(reradiated_beyond(scene, walk, LightSampleContext{point.p, point.ng, point.ns()},
                                                               s->pdf_fwd, path_length, it.max_depth, sampler, pixel.rays),
                                             lambda.secondary_terminated(), ctx.hero_scale);
             if (walk.after_jump()) {
@@ -685,7 +686,7 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
                 m.scatter(w, w.at(point.in_medium()), s->cos_out, s->pdf_fwd, s->pdf_rev, s->specular);
             }
             previous = point.in_medium() ? LightSampleContext{point.p, Vec3f{}, Vec3f{}}
-                                         : LightSampleContext{point.p, point.ng, point.ns};
+                                         : LightSampleContext{point.p, point.ng, point.ns()};
             break;
         }
         // Russian roulette on beta * eta^2, as in the path tracer (pbrt-v4 14.1).
