@@ -61,6 +61,8 @@ lights/emission-image 1024
 integrators/regularize-path 4096
 lights/many-lights 2048
 lights/invisible-lamps 2048
+lights/clamped-lamps 4096
+lights/clamped-lamps-bdpt 4096
 media/smoke-uniformgrid 8192
 media/smoke-rgbgrid 8192
 media/ground-fog 8192

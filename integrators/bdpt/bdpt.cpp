@@ -380,6 +380,7 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                   const ProgressCallback &progress) {
     const int max_depth = max_depth_;
     Film &film = *scene.film;
+    const bool join_light_starts = lens_joins_light_starts(scene);
     for_each_pixel_sample(scene, budget, stats, progress, [&](Vec2i pixel, int, PixelSampleContext &sample) {
         Sampler &sampler = sample.sampler;
         SampledWavelengths lambda = sample_wavelengths(scene, sampler.get_1d());
@@ -421,6 +422,7 @@ void BDPT::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
             };
             for (int t = 1; t <= n_camera; ++t)
                 for (int s = 0; s <= std::max(n_light, t > 1 ? 1 : 0); ++s) {
+                    if (s == 1 && t == 1 && !join_light_starts) continue;
                     const int depth = s + t - 2 - camera_vertices[t - 1].jumps - (s > 1 ? light_vertices[s - 1].jumps : 0);
                     if (depth < 0) continue;
                     // s = 1 with t > 1 samples a light afresh: the medium start is joined on its own.

@@ -1,5 +1,6 @@
 #include "integrators/bdpt/mis_weight.h"
 
+#include "integrators/common/light_path_start.h"
 #include "scene/scene.h"
 
 #include <utility>
@@ -83,13 +84,15 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
     // strategy that has the light subpath reach camera vertex i to that of this strategy
     // (Veach 1997, eq. 10.9), squared for the power heuristic. A strategy is counted only if
     // it can exist: no connection at a specular vertex, none to the lens from a vertex at
-    // infinity (a direction cannot be joined to a lens point), and none across a subsurface
-    // jump (PathVertex::after_jump).
+    // infinity (a direction cannot be joined to a lens point), none of the light's own point to
+    // the lens when bdpt leaves that strategy out (lens_joins_light_starts), and none across a
+    // subsurface jump (PathVertex::after_jump).
+    const bool light_start_to_lens = lens_joins_light_starts(scene);
     float sum_ratios = 0;
     float ratio = 1;
     for (int i = t - 1; i > 0; --i) {
         ratio *= sqr(remap0(camera_vertices[i].pdf_rev) / remap0(camera_vertices[i].pdf_fwd));
-        bool lens_connection_impossible = i == 1 && camera_vertices[1].at_infinity;
+        bool lens_connection_impossible = i == 1 && (camera_vertices[1].at_infinity || (k == 2 && !light_start_to_lens));
         if (!camera_vertices[i].delta && !camera_vertices[i - 1].delta && !lens_connection_impossible &&
             !camera_vertices[i].after_jump)
             sum_ratios += ratio * (factor(k - i) / this_factor);

@@ -59,6 +59,8 @@ LightPoint LightPathStart::origin() const {
     return {light, les.ray.o, les.n, les.uv, les.error_scale, les.ray.time, pmf * les.pdf_pos};
 }
 
+bool lens_joins_light_starts(const Scene &scene) { return !scene.film->clamps_samples(); }
+
 std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const LightPoint &start, Vec2f u_lens,
                                                   const SampledWavelengths &lambda, uint64_t &rays) {
     if (is_delta_light(start.light->type())) return std::nullopt;

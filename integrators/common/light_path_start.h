@@ -76,4 +76,13 @@ struct StartSeenByLens {
 std::optional<StartSeenByLens> join_start_to_lens(const Scene &scene, const LightPoint &start, Vec2f u_lens,
                                                   const SampledWavelengths &lambda, uint64_t &rays);
 
+// Whether bdpt and vcm join light subpaths' starts to the lens, as a strategy beside the camera
+// hitting the light. Not when the film clamps samples ("maxcomponentvalue"): the clamp acts on
+// each camera sample's value and each splat apart, and this strategy renders a bright light
+// seen directly with many faint splats, which the clamp leaves alone, where pt, sppm, bpm and
+// pbrt-v4's bdpt (which has no such strategy: pbrt-v4 section 16.3.3) see it with camera rays
+// whose values it cuts down. Without the strategy a light seen directly is the camera's hit
+// alone, with weight 1, as there. lt has no other way to render it and always joins.
+bool lens_joins_light_starts(const Scene &scene);
+
 } // namespace caustica

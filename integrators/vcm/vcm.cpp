@@ -78,6 +78,8 @@ struct Iteration {
     const Scene &scene;
     int max_depth;
     bool use_vc;
+    // Light tracing of the light subpaths' starts on area lights (lens_joins_light_starts).
+    bool join_light_starts;
     float radius, medium_radius; // of the disks that merge on surfaces, and the spheres in media
     const WavelengthGroups &groups;
     std::vector<VcmWeights> weights;       // per wavelength group
@@ -272,7 +274,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, Li
     if (it.use_vc && light.type() == LightType::Area) {
         // Drawn whether or not the lens is joined, as for the vertices below.
         const Vec2f u_lens = sampler.get_2d();
-        if (ctx.connect_to_lens) connect_start_to_camera(ctx, *start, lambda, u_lens);
+        if (ctx.connect_to_lens && it.join_light_starts) connect_start_to_camera(ctx, *start, lambda, u_lens);
     }
     SubpathMis m; // set at the first vertex (light_start_mis)
     int path_length = 0;
@@ -644,7 +646,11 @@ SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pi
         if (!point.in_medium() && walk.hit().area_light) {
             const SurfaceInteraction &si = walk.hit();
             SampledSpectrum Le = si.area_light->L(si.p, si.n, si.uv, si.wo, lambda);
-            if (!Le.is_black()) {
+            if (path_length == 1 && !it.join_light_starts) {
+                // Seen directly from the lens, with no light tracing of the starts to weigh
+                // against: the one strategy for a path of two vertices.
+                add(Le);
+            } else if (!Le.is_black()) {
                 // Seen directly from the lens, the point is weighed against light tracing of the
                 // light subpaths' starts (connect_start_to_camera), which chose it by their own
                 // choice of a light; further along, against next-event estimation from the
@@ -727,7 +733,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         groups.start_iteration(scene, iteration, pixel_count, pixel_count);
         const float shrink = std::pow(float(iteration + 1), (alpha_ - 1) / 2);
         const float radius = base_radius_ * shrink, medium_radius = base_medium_radius_ * shrink;
-        Iteration it{scene, max_depth_, use_vc, radius, medium_radius, groups, {}, {}, {},
+        Iteration it{scene, max_depth_, use_vc, use_vc && lens_joins_light_starts(scene), radius, medium_radius, groups, {}, {}, {},
                      float(pixel_count), float(full.x) * float(full.y), renderer.time(iteration)};
         for (int g = 0; g < groups.count(); ++g) {
             const float light_path_count = float(std::max<size_t>(groups.light_path_count(g), 1));

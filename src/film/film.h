@@ -47,6 +47,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <iosfwd>
 #include <map>
 #include <memory>
@@ -120,6 +121,8 @@ class Film {
         moments_.assign(pixel_count(), Moments{});
     }
     bool monochromatic() const { return monochromatic_; }
+    // Whether "maxcomponentvalue" clamps samples at all.
+    bool clamps_samples() const { return std::isfinite(max_component_value_); }
 
     // A camera sample for `pixel`, which must lie inside pixel_bounds() (iterate those, not the
     // full resolution, when a crop window is set; samples outside are dropped). L must be

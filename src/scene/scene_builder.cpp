@@ -507,16 +507,22 @@ std::unique_ptr<Scene> build_scene(const SceneDescription &d, const RenderOverri
     for (const MaterialPtr &m : scene->materials)
         if (const Fluorophore *dye = m->fluorophore()) reemitted.push_back(dye->reemitted(emitted));
     if (!reemitted.empty()) scene->light_path_wavelength_density.emplace(emitted);
-    scene->wavelength_density.emplace([&](float lambda) {
-        float power = emitted(lambda);
-        const size_t nm = size_t(std::clamp(std::lround(lambda - LambdaMin), 0L, long(LambdaMax - LambdaMin)));
-        for (const std::vector<float> &r : reemitted) power += r[nm];
-        return power;
-    });
+    // A film that clamps samples ("maxcomponentvalue") clamps each sample's colour, so its image
+    // depends on how the wavelengths were drawn: they are drawn as pbrt-v4 draws them (visible
+    // wavelengths, SampledWavelengths::sample_visible), and the clamp cuts what it cuts there.
+    if (!scene->film->clamps_samples())
+        scene->wavelength_density.emplace([&](float lambda) {
+            float power = emitted(lambda);
+            const size_t nm = size_t(std::clamp(std::lround(lambda - LambdaMin), 0L, long(LambdaMax - LambdaMin)));
+            for (const std::vector<float> &r : reemitted) power += r[nm];
+            return power;
+        });
     const Spectrum *colour = achromatic_colour(*scene);
     scene->features.achromatic = colour != nullptr;
-    // Overrides that ask for wavelengths (monochromatic, single or sampled) come first.
-    if (colour && ov.wavelength <= 0 && !ov.single_wavelength && !ov.spectral) {
+    // Overrides that ask for wavelengths (monochromatic, single or sampled) come first. A film
+    // that clamps samples keeps sampled wavelengths too, as above: one wavelength would give each
+    // sample the light's exact colour, where pbrt-v4's samples carry colour noise into its clamp.
+    if (colour && ov.wavelength <= 0 && !ov.single_wavelength && !ov.spectral && !scene->film->clamps_samples()) {
         scene->achromatic_wavelength = peak_wavelength(*colour);
         scene->film->set_achromatic(*colour, scene->achromatic_wavelength);
     }

@@ -63,7 +63,10 @@ INSTANTIATE_TEST_SUITE_P(Lights, PbrtWitness,
                                            RenderCase{"lights/invisible-lamps", "bdpt", 32},
                                            RenderCase{"lights/invisible-lamps", "sppm", 128},
                                            RenderCase{"lights/invisible-lamps", "bpm", 128},
-                                           RenderCase{"lights/invisible-lamps", "vcm", 32}),
+                                           RenderCase{"lights/invisible-lamps", "vcm", 32},
+                                           RenderCase{"lights/clamped-lamps", "pt", 256},
+                                           RenderCase{"lights/clamped-lamps-bdpt", "bdpt", 128},
+                                           RenderCase{"lights/clamped-lamps-bdpt", "vcm", 128}),
                          witness_case_name);
 
 } // namespace
