@@ -506,8 +506,10 @@ void SPPM::render(const Scene &scene, const RenderBudget &budget, RenderStats &s
                 // All photons of the iteration over the group's: the final normalisation divides
                 // by the total photon count.
                 const float group_scale = float(photon_count) / float(groups.light_path_count(g));
-                if (buckets > 0) film.add_bucket_values(flux * group_scale, vp.lambda, bucket_phi);
-                return film.sensor_value(flux, vp.lambda) * group_scale;
+                // A density estimate, not a sample: the film's clamp leaves it alone.
+                if (buckets > 0)
+                    film.add_bucket_values(flux * group_scale, vp.lambda, bucket_phi, Film::ValueKind::PhotonEstimate);
+                return film.sensor_value(flux, vp.lambda, Film::ValueKind::PhotonEstimate) * group_scale;
             };
             tbb::parallel_for(size_t(0), pixels.size(), [&](size_t index) {
                 if (!owned[index]) return;

@@ -72,11 +72,12 @@ void Film::set_achromatic(const Spectrum &colour, float lambda) {
 }
 
 template <typename Add>
-void Film::for_each_bucket_value(const SampledSpectrum &L_in, const SampledWavelengths &lambda, Add &&add) const {
+void Film::for_each_bucket_value(const SampledSpectrum &L_in, const SampledWavelengths &lambda, ValueKind kind,
+                                 Add &&add) const {
     // pbrt-v4 clamps the spectral value by its largest wavelength.
     SampledSpectrum L = L_in;
     const float lm = L.max_value();
-    if (lm > max_component_value_) L *= max_component_value_ / lm;
+    if (kind == ValueKind::Sample && lm > max_component_value_) L *= max_component_value_ / lm;
     if (monochromatic_) {
         // One wavelength only: its radiance goes to its bucket.
         if (spectral_->contains(lambda[0])) add(spectral_->bucket_of(lambda[0]), double(safe_div(L, lambda.pdf()).average()));
@@ -91,11 +92,12 @@ void Film::for_each_bucket_value(const SampledSpectrum &L_in, const SampledWavel
     }
 }
 
-void Film::add_bucket_values(const SampledSpectrum &L, const SampledWavelengths &lambda, double *out) const {
-    for_each_bucket_value(L, lambda, [out](int b, double v) { out[b] += v; });
+void Film::add_bucket_values(const SampledSpectrum &L, const SampledWavelengths &lambda, double *out,
+                             ValueKind kind) const {
+    for_each_bucket_value(L, lambda, kind, [out](int b, double v) { out[b] += v; });
 }
 
-RGB Film::sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const {
+RGB Film::sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda, ValueKind kind) const {
     RGB v;
     if (monochromatic_) {
         float grey = safe_div(L, lambda.pdf()).average() * sensor_.imaging_ratio();
@@ -108,7 +110,7 @@ RGB Film::sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambd
     // pbrt-v4's clamp: scale the value down so its largest component is the maximum, which
     // keeps its chromaticity.
     float m = v.max_component();
-    if (m > max_component_value_) v *= max_component_value_ / m;
+    if (kind == ValueKind::Sample && m > max_component_value_) v *= max_component_value_ / m;
     return v;
 }
 
@@ -119,7 +121,8 @@ void Film::add_sample(Vec2i pixel, const SampledSpectrum &L, const SampledWavele
     if (spectral_ && pixel_bounds_.contains(pixel)) {
         int64_t *sums = &bucket_sums_[index(pixel) * spectral_->count()];
         bool ok = true;
-        for_each_bucket_value(L, lambda, [&](int b, double v) { ok &= fixed_point::add(sums[b], double(filter_weight) * v); });
+        for_each_bucket_value(L, lambda, ValueKind::Sample,
+                              [&](int b, double v) { ok &= fixed_point::add(sums[b], double(filter_weight) * v); });
         if (!ok) camera_overflow_ = true;
     }
 }
@@ -156,7 +159,7 @@ void Film::add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWave
     if (!spectral_) return;
     // Four buckets per record; an achromatic sample fills every bucket.
     SplatValues values;
-    for_each_bucket_value(L, lambda, [&](int b, double v) {
+    for_each_bucket_value(L, lambda, ValueKind::Sample, [&](int b, double v) {
         values.add(b, float(v));
         if (values.count == int(values.value.size())) {
             bucket_splats_->add(p_raster, values);

@@ -133,10 +133,16 @@ class Film {
     // (else null): for estimators that combine values of several wavelength sets per pixel before
     // adding them (progressive photon mapping).
     void add_sensor_value(Vec2i pixel, RGB value, float filter_weight, const double *bucket_values = nullptr);
-    // A spectral value in the sensor's space (clamped to "maxcomponentvalue").
-    RGB sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda) const;
+    // What a value passed to the film is. "maxcomponentvalue" clamps one sample's value (pbrt-v4
+    // clamps each camera sample and each splat); a density estimate gathered from many photons
+    // has no such outliers to cut and is left alone, as pbrt-v4's sppm leaves its own.
+    enum class ValueKind { Sample, PhotonEstimate };
+    // A spectral value in the sensor's space (a sample's clamped to "maxcomponentvalue").
+    RGB sensor_value(const SampledSpectrum &L, const SampledWavelengths &lambda,
+                     ValueKind kind = ValueKind::Sample) const;
     // A spectral film's per-bucket estimates of L (see above), added to out[0, buckets).
-    void add_bucket_values(const SampledSpectrum &L, const SampledWavelengths &lambda, double *out) const;
+    void add_bucket_values(const SampledSpectrum &L, const SampledWavelengths &lambda, double *out,
+                           ValueKind kind = ValueKind::Sample) const;
     // A light-tracing contribution at a raster position; reaches every pixel within the
     // filter's radius, weighted by the filter. Thread-safe and order-independent.
     void add_splat(Vec2f p_raster, const SampledSpectrum &L, const SampledWavelengths &lambda);
@@ -218,7 +224,8 @@ class Film {
     void add_bucket_channels(Image &image, double splat_scale, std::map<std::string, std::string> *metadata) const;
     // Calls add(bucket, value) with a spectral film's estimates of L (see above).
     template <typename Add>
-    void for_each_bucket_value(const SampledSpectrum &L, const SampledWavelengths &lambda, Add &&add) const;
+    void for_each_bucket_value(const SampledSpectrum &L, const SampledWavelengths &lambda, ValueKind kind,
+                               Add &&add) const;
     // The camera samples' store, allocated on first use (thread-safe).
     Pixel *camera_pixels();
 

@@ -81,6 +81,37 @@ TEST(PhotonIntegratorParameters, RetracedLightPathsGiveTheStoredImage) {
         }
 }
 
+// The film's "maxcomponentvalue" clamps samples, not sppm's photon density estimates (pbrt-v4's
+// sppm clamps neither): the caustic under a glass ball, rendered with a clamp of 100 that no
+// camera sample's direct light reaches at this seed and size, must be the image with no clamp
+// that acts at all (1e30; both films clamp, so both draw the same wavelengths), value for value.
+// Negative control (one run, then undone): clamping each iteration's photon sum at a visible
+// point as a sample, as sppm once did, changes 42 of the image's 9216 values.
+TEST(PhotonIntegratorParameters, TheClampLeavesSppmPhotonEstimatesAlone) {
+    const std::string dir = scratch_dir("sppm-clamp");
+    const std::string source = read_text(std::string(CAUSTICA_SOURCE_DIR) + "/scenes/glass-sphere-caustic.pbrt");
+    const char *clamps[] = {"1e30", "100"};
+    std::string images[2];
+    for (int i = 0; i < 2; ++i) {
+        const std::string clamp = clamps[i];
+        std::string text = source;
+        const size_t at = text.find("Film \"rgb\"");
+        ASSERT_NE(at, std::string::npos);
+        text.insert(at + 10, " \"float maxcomponentvalue\" " + clamp);
+        const std::string scene = dir + "/clamp-" + clamp + ".pbrt", out = dir + "/clamp-" + clamp + ".exr";
+        std::FILE *f = std::fopen(scene.c_str(), "wb");
+        ASSERT_NE(f, nullptr);
+        std::fwrite(text.data(), 1, text.size(), f);
+        std::fclose(f);
+        ASSERT_EQ(run_caustica("render " + scene + " --quiet --integrator sppm --spp 16 --seed 3 --resolution 64x48 -o " +
+                               out),
+                  0)
+            << clamp;
+        images[i] = out;
+    }
+    expect_identical(read_rgb(images[0]), read_rgb(images[1]), "sppm under a clamp that no sample reaches");
+}
+
 // Parameters are checked where they are read: an out-of-range value is an error at its location
 // in the scene file (exit status 2, nothing written).
 TEST(PhotonIntegratorParameters, OutOfRangeValuesAreErrorsAtTheirLocation) {
