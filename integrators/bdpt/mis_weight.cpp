@@ -87,12 +87,11 @@ float bdpt_mis_weight(const Scene &scene, PathVertex *light_vertices, PathVertex
     // infinity (a direction cannot be joined to a lens point), none of the light's own point to
     // the lens when bdpt leaves that strategy out (lens_joins_light_starts), and none across a
     // subsurface jump (PathVertex::after_jump).
-    const bool light_start_to_lens = lens_joins_light_starts(scene);
     float sum_ratios = 0;
     float ratio = 1;
     for (int i = t - 1; i > 0; --i) {
         ratio *= sqr(remap0(camera_vertices[i].pdf_rev) / remap0(camera_vertices[i].pdf_fwd));
-        bool lens_connection_impossible = i == 1 && (camera_vertices[1].at_infinity || (k == 2 && !light_start_to_lens));
+        bool lens_connection_impossible = i == 1 && (camera_vertices[1].at_infinity || (k == 2 && !lens_joins_light_starts(scene)));
         if (!camera_vertices[i].delta && !camera_vertices[i - 1].delta && !lens_connection_impossible &&
             !camera_vertices[i].after_jump)
             sum_ratios += ratio * (factor(k - i) / this_factor);
