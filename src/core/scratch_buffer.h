@@ -11,7 +11,9 @@
 
 namespace caustica {
 
-class ScratchBuffer {
+// Cache-line aligned for the reason Sampler is (sampler/sampler.h): its offset changes with every
+// allocation.
+class alignas(64) ScratchBuffer {
   public:
     explicit ScratchBuffer(size_t size = 64 * 1024) : size_(size) { block_ = allocate_block(size_); }
     ScratchBuffer(const ScratchBuffer &) = delete;

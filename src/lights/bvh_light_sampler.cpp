@@ -118,7 +118,14 @@ int BVHLightSampler::build(std::vector<int> &lights, size_t begin, size_t end, i
     Node &node = nodes_[size_t(index)];
     node.bounds = all;
     node.light_or_second_child = second;
+    node.twins = same_bounds(nodes_[size_t(index) + 1].bounds, nodes_[size_t(second)].bounds);
     return index;
+}
+
+std::pair<double, double> BVHLightSampler::child_importances(const Node &node, const LightSampleContext &ctx) const {
+    const double first = nodes_[size_t(&node - nodes_.data()) + 1].bounds.importance(ctx.p, ctx.ns);
+    if (node.twins) return {first, first};
+    return {first, nodes_[size_t(node.light_or_second_child)].bounds.importance(ctx.p, ctx.ns)};
 }
 
 std::optional<SampledLight> BVHLightSampler::sample_bounded(const LightSampleContext &ctx, float u) const {
@@ -126,8 +133,7 @@ std::optional<SampledLight> BVHLightSampler::sample_bounded(const LightSampleCon
     double pmf = 1;
     while (!nodes_[size_t(node)].leaf) {
         const int first = node + 1, second = nodes_[size_t(node)].light_or_second_child;
-        const double i0 = nodes_[size_t(first)].bounds.importance(ctx.p, ctx.ns);
-        const double i1 = nodes_[size_t(second)].bounds.importance(ctx.p, ctx.ns);
+        const auto [i0, i1] = child_importances(nodes_[size_t(node)], ctx);
         if (!(i0 + i1 > 0)) return {};
         const double p0 = i0 / (i0 + i1);
         if (double(u) < p0) {
@@ -151,9 +157,8 @@ float BVHLightSampler::pmf_bounded(const LightSampleContext &ctx, int bounded_in
     double pmf = 1;
     while (node != 0) {
         const int parent = nodes_[size_t(node)].parent;
-        const int first = parent + 1, second = nodes_[size_t(parent)].light_or_second_child;
-        const double i0 = nodes_[size_t(first)].bounds.importance(ctx.p, ctx.ns);
-        const double i1 = nodes_[size_t(second)].bounds.importance(ctx.p, ctx.ns);
+        const int first = parent + 1;
+        const auto [i0, i1] = child_importances(nodes_[size_t(parent)], ctx);
         if (!(i0 + i1 > 0)) return 0;
         pmf *= (node == first ? i0 : i1) / (i0 + i1);
         node = parent;

@@ -8,6 +8,7 @@
 
 #include "lights/light_sampler.h"
 
+#include <utility>
 #include <vector>
 
 namespace caustica {
@@ -27,7 +28,12 @@ class BVHLightSampler final : public ImportanceLightSampler {
         // follows it).
         int light_or_second_child = -1;
         bool leaf = false;
+        // An interior node whose children have the same bounds (same_bounds): their importances
+        // are equal wherever they are evaluated, so one of them decides, and the choice is even.
+        bool twins = false;
     };
+    // The importances of an interior node's two children at the receiving point.
+    std::pair<double, double> child_importances(const Node &node, const LightSampleContext &ctx) const;
     // Builds the subtree over lights[begin, end) of bounded_ indices; returns its root.
     int build(std::vector<int> &lights, size_t begin, size_t end, int parent);
 

@@ -98,6 +98,13 @@ float LightBounds::importance(Vec3f p, Vec3f n) const {
     return std::clamp(importance, 0.f, MaxImportance);
 }
 
+bool same_bounds(const LightBounds &a, const LightBounds &b) {
+    const EmissionDirections &da = a.directions, &db = b.directions;
+    return a.bounds.lo == b.bounds.lo && a.bounds.hi == b.bounds.hi && a.phi == b.phi &&
+           da.normals.w == db.normals.w && da.normals.cos_theta == db.normals.cos_theta &&
+           da.cos_theta_e == db.cos_theta_e && da.two_sided == db.two_sided;
+}
+
 LightBounds bounds_union(const LightBounds &a, const LightBounds &b) {
     if (a.phi == 0) return b;
     if (b.phi == 0) return a;

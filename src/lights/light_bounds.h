@@ -39,6 +39,10 @@ struct LightBounds {
     float cos_o_ = -1, sin_o_ = 0;
 };
 
+// True when a and b hold the same bounds, power and directions, so that their importance is the
+// same at every point: two triangles of an axis-aligned rectangle are such a pair.
+bool same_bounds(const LightBounds &a, const LightBounds &b);
+
 // Bounds of both lights' bounds together (a tree node's).
 LightBounds bounds_union(const LightBounds &a, const LightBounds &b);
 

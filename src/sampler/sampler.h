@@ -20,7 +20,9 @@
 
 namespace caustica {
 
-class Sampler {
+// Cache-line aligned (and so padded to whole lines): a sampler's state changes with every value it
+// draws, and a line it shared with scene data read by another thread would bounce between cores.
+class alignas(64) Sampler {
   public:
     virtual ~Sampler() = default;
     virtual int samples_per_pixel() const = 0;

@@ -104,14 +104,15 @@ std::vector<LightSampleContext> receivers(int count) {
 // of one: a node whose bounds may face the receiver can hold only lights that do not, and a
 // descent into it chooses nothing. Either way, sample() must choose each light as often as pmf()
 // says, and nothing as often as the shortfall.
-template <class Sampler> void expect_a_consistent_distribution(bool may_choose_nothing, int receiver_count, int n) {
-    const ManyLights scene(300);
-    const Sampler sampler(scene.lights);
+template <class Sampler>
+void expect_a_consistent_distribution(const std::vector<LightPtr> &lights, bool may_choose_nothing, int receiver_count,
+                                      int n) {
+    const Sampler sampler(lights);
     double shortfall = 0;
     for (const LightSampleContext &ctx : receivers(receiver_count)) {
         double sum = 0;
         std::vector<double> pmf;
-        for (const LightPtr &l : scene.lights) {
+        for (const LightPtr &l : lights) {
             pmf.push_back(sampler.pmf(ctx, l.get()));
             sum += pmf.back();
         }
@@ -121,7 +122,7 @@ template <class Sampler> void expect_a_consistent_distribution(bool may_choose_n
         // Stratified u: every light gets a run of u as long as its probability (the descent maps
         // u onto consecutive intervals), so its count is n pmf within a couple of samples, and
         // each sample reports the light's pmf().
-        std::vector<int> counts(scene.lights.size());
+        std::vector<int> counts(lights.size());
         int nothing = 0;
         for (int i = 0; i < n; ++i) {
             const std::optional<SampledLight> s = sampler.sample(ctx, (i + 0.5f) / n);
@@ -130,7 +131,7 @@ template <class Sampler> void expect_a_consistent_distribution(bool may_choose_n
                 continue;
             }
             size_t k = 0;
-            while (scene.lights[k].get() != s->light) ++k;
+            while (lights[k].get() != s->light) ++k;
             ASSERT_NEAR(s->pmf, pmf[k], 1e-5 * pmf[k]) << "light " << k;
             ++counts[k];
         }
@@ -140,10 +141,60 @@ template <class Sampler> void expect_a_consistent_distribution(bool may_choose_n
     }
     std::printf("mean probability of choosing nothing: %.4f\n", shortfall / receiver_count);
 }
+template <class Sampler> void expect_a_consistent_distribution(bool may_choose_nothing, int receiver_count, int n) {
+    expect_a_consistent_distribution<Sampler>(ManyLights(300).lights, may_choose_nothing, receiver_count, n);
+}
 
 TEST(BVHLightSampler, SampleAndPmfAgree) { expect_a_consistent_distribution<BVHLightSampler>(true, 60, 20000); }
 TEST(ExhaustiveLightSampler, IsADistributionThatSampleAndPmfAgreeOn) {
     expect_a_consistent_distribution<ExhaustiveLightSampler>(false, 12, 4000);
+}
+
+// A rectangle of two triangles, as scene files write quad lights: a light for each triangle.
+struct Rectangle {
+    std::shared_ptr<const Triangle> triangles[2];
+    LightPtr lights[2];
+    Rectangle(const Transform &placed, std::vector<LightPtr> &all) {
+        auto mesh = std::make_shared<TriangleMesh>(
+            placed, false, std::vector<int>{0, 1, 2, 0, 2, 3},
+            std::vector<Vec3f>{{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}},
+            std::vector<Vec3f>{}, std::vector<Vec2f>{});
+        for (int i = 0; i < 2; ++i) {
+            triangles[i] = std::make_shared<const Triangle>(mesh, i);
+            lights[i] = std::make_shared<DiffuseAreaLight>(triangles[i], std::make_shared<ConstantSpectrum>(1.f), 1.f,
+                                                           false);
+            all.push_back(lights[i]);
+        }
+    }
+};
+
+// The two triangles of an axis-aligned rectangle have the same bounds, so the tree takes one
+// importance for both and chooses between them evenly; that shortcut must give the probabilities
+// that evaluating both would: exactly equal, zero together where the rectangle cannot light the
+// receiver, and sample() agreeing with pmf() among other lights, twins and not.
+TEST(BVHLightSampler, ChoosesEvenlyBetweenTrianglesWithTheSameBounds) {
+    std::vector<LightPtr> lights;
+    const Rectangle level(Transform::translate({0, 0, 2}), lights);
+    const Rectangle tilted(Transform::translate({3, 1, 0}) * Transform::rotate(30, {1, 1, 0}), lights);
+    ASSERT_TRUE(same_bounds(*light_bounds(*level.lights[0]), *light_bounds(*level.lights[1])));
+    ASSERT_FALSE(same_bounds(*light_bounds(*tilted.lights[0]), *light_bounds(*tilted.lights[1])));
+    for (const LightPtr &l : ManyLights(40).lights) lights.push_back(l);
+    const BVHLightSampler sampler(lights);
+    int lit = 0, below = 0;
+    for (const LightSampleContext &ctx : receivers(2000)) {
+        const float p0 = sampler.pmf(ctx, level.lights[0].get()), p1 = sampler.pmf(ctx, level.lights[1].get());
+        ASSERT_EQ(p0, p1);
+        // The rectangle emits towards +z from z = 2: nothing well below it (the importance is
+        // conservative near its plane), most receivers above.
+        if (2 - ctx.p.z > 2 * std::hypot(ctx.p.x, ctx.p.y) + 2) {
+            ASSERT_EQ(p0, 0.f);
+            ++below;
+        }
+        lit += p0 > 0;
+    }
+    EXPECT_GT(lit, 500);
+    EXPECT_GT(below, 50);
+    expect_a_consistent_distribution<BVHLightSampler>(lights, true, 30, 20000);
 }
 
 // Wherever some point of a triangle light emits towards a receiver from outside its tangent
