@@ -122,10 +122,11 @@ int BVHLightSampler::build(std::vector<int> &lights, size_t begin, size_t end, i
     return index;
 }
 
-std::pair<double, double> BVHLightSampler::child_importances(const Node &node, const LightSampleContext &ctx) const {
-    const double first = nodes_[size_t(&node - nodes_.data()) + 1].bounds.importance(ctx.p, ctx.ns);
-    if (node.twins) return {first, first};
-    return {first, nodes_[size_t(node.light_or_second_child)].bounds.importance(ctx.p, ctx.ns)};
+std::pair<double, double> BVHLightSampler::child_importances(int node, const LightSampleContext &ctx) const {
+    const Node &n = nodes_[size_t(node)];
+    const double first = nodes_[size_t(node) + 1].bounds.importance(ctx.p, ctx.ns);
+    if (n.twins) return {first, first};
+    return {first, nodes_[size_t(n.light_or_second_child)].bounds.importance(ctx.p, ctx.ns)};
 }
 
 std::optional<SampledLight> BVHLightSampler::sample_bounded(const LightSampleContext &ctx, float u) const {
@@ -133,7 +134,7 @@ std::optional<SampledLight> BVHLightSampler::sample_bounded(const LightSampleCon
     double pmf = 1;
     while (!nodes_[size_t(node)].leaf) {
         const int first = node + 1, second = nodes_[size_t(node)].light_or_second_child;
-        const auto [i0, i1] = child_importances(nodes_[size_t(node)], ctx);
+        const auto [i0, i1] = child_importances(node, ctx);
         if (!(i0 + i1 > 0)) return {};
         const double p0 = i0 / (i0 + i1);
         if (double(u) < p0) {
@@ -158,7 +159,7 @@ float BVHLightSampler::pmf_bounded(const LightSampleContext &ctx, int bounded_in
     while (node != 0) {
         const int parent = nodes_[size_t(node)].parent;
         const int first = parent + 1;
-        const auto [i0, i1] = child_importances(nodes_[size_t(parent)], ctx);
+        const auto [i0, i1] = child_importances(parent, ctx);
         if (!(i0 + i1 > 0)) return 0;
         pmf *= (node == first ? i0 : i1) / (i0 + i1);
         node = parent;

@@ -32,8 +32,8 @@ class BVHLightSampler final : public ImportanceLightSampler {
         // are equal wherever they are evaluated, so one of them decides, and the choice is even.
         bool twins = false;
     };
-    // The importances of an interior node's two children at the receiving point.
-    std::pair<double, double> child_importances(const Node &node, const LightSampleContext &ctx) const;
+    // The importances of interior node `node`'s two children at the receiving point.
+    std::pair<double, double> child_importances(int node, const LightSampleContext &ctx) const;
     // Builds the subtree over lights[begin, end) of bounded_ indices; returns its root.
     int build(std::vector<int> &lights, size_t begin, size_t end, int parent);
 
