@@ -442,7 +442,7 @@ void GeometryScene::commit() {
     committed_ = true;
 }
 
-bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
+bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si, SurfaceHit *hit) const {
     QueryContext context;
     rtcInitIntersectContext(&context.embree);
     context.t_max = ray.t_max;
@@ -466,13 +466,37 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     rtcIntersect1(scene_, &context.embree, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
 
+    SurfaceHit found;
+    if (rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+        found.slot = rayhit.hit.instID[0];
+        found.geometry = rayhit.hit.geomID;
+    } else {
+        found.slot = rayhit.hit.geomID;
+    }
+    found.primitive = rayhit.hit.primID;
+    found.uv = {rayhit.hit.u, rayhit.hit.v};
+    fill_interaction(found, ray, rayhit.ray.tfar, si);
+    if (hit) *hit = found;
+    return true;
+}
+
+SurfaceInteraction GeometryScene::interaction(const SurfaceHit &hit, Vec3f p, Vec3f wo, float time) const {
+    // The point stands for the ray's origin at t = 0: analytic shapes project it onto their
+    // surface and curves face their width towards -wo, as they did for the ray.
+    SurfaceInteraction si;
+    fill_interaction(hit, Ray{p, -wo, Infinity, time}, 0, &si);
+    si.wo = wo;
+    return si;
+}
+
+void GeometryScene::fill_interaction(const SurfaceHit &hit, const Ray &ray, float t, SurfaceInteraction *si) const {
     const Primitive *primitive;
     const Instance *instance = nullptr;
-    if (rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
-        instance = &instances_[slots_[rayhit.hit.instID[0]].instance];
-        primitive = &prototypes_[instance->prototype].primitives[rayhit.hit.geomID];
+    if (hit.geometry != SurfaceHit::None) {
+        instance = &instances_[slots_[hit.slot].instance];
+        primitive = &prototypes_[instance->prototype].primitives[hit.geometry];
     } else {
-        primitive = &slots_[rayhit.hit.geomID].primitive;
+        primitive = &slots_[hit.slot].primitive;
     }
 
     // Shading data are computed where the shape lives and then moved to render space. The ray
@@ -484,25 +508,23 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
         render_from_instance = &instance->render_from_instance;
         const Transform *instance_from_render = &instance->instance_from_render;
         if (instance->moving) {
-            render_from_instance = &moved.emplace(transform_at(*instance, rayhit.ray.time));
+            render_from_instance = &moved.emplace(transform_at(*instance, times_.fraction(ray.time)));
             instance_from_render = &moved_back.emplace(moved->inverse());
         }
         local.o = instance_from_render->apply_point(ray.o);
         local.d = instance_from_render->apply_vector(ray.d);
     }
-    float t = rayhit.ray.tfar;
-    unsigned index = rayhit.hit.primID;
+    const unsigned index = hit.primitive;
     const ShapeGroup &group = *primitive->group;
     if (group.mesh) {
         // Embree's barycentrics weight vertices 1 and 2; the point is interpolated from the
         // vertices, so it lies on the triangle up to rounding.
-        float u = rayhit.hit.u, v = rayhit.hit.v;
-        float b[3] = {std::max(0.f, 1 - u - v), u, v};
+        float b[3] = {std::max(0.f, 1 - hit.uv.x - hit.uv.y), hit.uv.x, hit.uv.y};
         group.mesh->interaction(int(index), b, si);
     } else if (group.curves) {
-        group.curves->interaction(int(index), rayhit.hit.u, local, t, si);
+        group.curves->interaction(int(index), hit.uv.x, local, t, si);
     } else if (group.patches) {
-        group.patches->interaction(int(index), {rayhit.hit.u, rayhit.hit.v}, si);
+        group.patches->interaction(int(index), hit.uv, si);
     } else {
         *si = group.analytic->interaction(local, t);
     }
@@ -519,7 +541,6 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     si->medium_interface = primitive->attributes.medium_interface;
     const auto &lights = primitive->attributes.area_lights;
     si->area_light = index < lights.size() ? lights[index] : nullptr;
-    return true;
 }
 
 bool GeometryScene::occluded(const Ray &ray) const {

@@ -15,6 +15,7 @@
 #include "geometry/alpha_mask.h"
 #include "geometry/interaction.h"
 #include "geometry/shape_group.h"
+#include "geometry/surface_hit.h"
 
 #include <embree3/rtcore.h>
 
@@ -63,8 +64,13 @@ class GeometryScene {
 
     // Queries, safe to call from many threads at once after commit().
     // Closest hit with 0 < t <= ray.t_max, with the geometry where it is at ray.time; fills every
-    // field of *si.
-    bool intersect(const Ray &ray, SurfaceInteraction *si) const;
+    // field of *si, and *hit if given.
+    bool intersect(const Ray &ray, SurfaceInteraction *si, SurfaceHit *hit = nullptr) const;
+    // The surface record of a hit that intersect() reported, rebuilt from the point si.p it
+    // reported and the direction si.wo: the same record, t aside (0 here), except that analytic
+    // shapes and curves start from the point rather than from the ray, which may move their
+    // fields by a few float ulps.
+    SurfaceInteraction interaction(const SurfaceHit &hit, Vec3f p, Vec3f wo, float time) const;
     // Any hit with 0 < t < ray.t_max.
     bool occluded(const Ray &ray) const;
 
@@ -95,6 +101,8 @@ class GeometryScene {
         int instance = -1;
     };
 
+    // The surface record of hit as found by ray at parameter t.
+    void fill_interaction(const SurfaceHit &hit, const Ray &ray, float t, SurfaceInteraction *si) const;
     // Attaches the group's Embree geometry to scene with ID geometry_id.
     void attach(RTCScene scene, unsigned geometry_id, const ShapeGroup &group, const AlphaMask *alpha);
     RTCScene new_scene() const;
