@@ -4,6 +4,7 @@
 #include "integrators/common/profile_subsurface.h"
 #include "integrators/common/reradiation.h"
 #include "materials/material.h"
+#include "materials/profile_subsurface_material.h"
 #include "media/medium_interface.h"
 #include "sampler/sampler.h"
 #include "scene/scene.h"
@@ -63,19 +64,47 @@ WalkEvent SubpathWalk::advance() {
         }
         if (beta.is_black()) return WalkEvent::Ended;
         if (!hit) return WalkEvent::Escaped;
-        // Scenes without textures have neither a footprint nor differentials: nothing reads them.
-        if (si_.material && (differential_ || scene_.camera_footprint))
-            compute_differentials(si_, differential_ ? &*differential_ : nullptr,
-                                  scene_.camera_footprint ? &*scene_.camera_footprint : nullptr,
-                                  sampler_.samples_per_pixel());
-        BSDF bsdf = si_.material ? shade(si_, lambda(), bsdf_memory_) : BSDF();
-        if (bsdf && regularize_ && any_non_specular_bounce_) bsdf.regularize(bsdf_memory_);
+        BSDF bsdf = surface_bsdf(scene_, si_, differential_ ? &*differential_ : nullptr, lambda(), bsdf_memory_,
+                                 sampler_.samples_per_pixel());
+        regularized_ = bsdf && regularize_ && any_non_specular_bounce_;
+        if (regularized_) bsdf.regularize(bsdf_memory_);
         if (bsdf || si_.area_light) {
             point_ = ScatteringPoint::on_surface(si_, bsdf, medium_);
             return WalkEvent::Vertex;
         }
         pass_through();
     }
+}
+
+BSDF SubpathWalk::surface_bsdf(const Scene &scene, SurfaceInteraction &si, const RayDifferential *differential,
+                               const SampledWavelengths &lambda, ScratchBuffer &memory, int samples_per_pixel) {
+    if (!si.material) return BSDF();
+    // Scenes without textures have neither a footprint nor differentials: nothing reads them.
+    if (differential || scene.camera_footprint)
+        compute_differentials(si, differential, scene.camera_footprint ? &*scene.camera_footprint : nullptr,
+                              samples_per_pixel);
+    return shade(si, lambda, memory);
+}
+
+StoredScatteringPoint SubpathWalk::stored_vertex() const {
+    if (point_.in_medium()) return {point_.p, point_.wo, SurfaceHit{}, false, false, medium_};
+    return {point_.p, point_.wo, si_.hit, after_jump_, regularized_ && !after_jump_, medium_};
+}
+
+ScatteringPoint SubpathWalk::rebuild(const Scene &scene, const StoredScatteringPoint &stored,
+                                     const SampledWavelengths &lambda, float time, ScratchBuffer &memory,
+                                     int samples_per_pixel) {
+    if (stored.in_medium())
+        return ScatteringPoint{stored.p, Vec3f{}, stored.wo, time, BSDF(), stored.medium, stored.medium, stored.medium};
+    SurfaceInteraction si = scene.geometry.interaction(stored.hit, stored.p, stored.wo, time);
+    BSDF bsdf;
+    if (stored.exit_lobe) {
+        bsdf = static_cast<const ProfileSubsurfaceMaterial *>(si.material)->subsurface_exit_bsdf(si, memory);
+    } else {
+        bsdf = surface_bsdf(scene, si, nullptr, lambda, memory, samples_per_pixel);
+        if (stored.regularized) bsdf.regularize(memory);
+    }
+    return ScatteringPoint::on_surface(si, bsdf, stored.medium);
 }
 
 void SubpathWalk::pass_through() {

@@ -36,6 +36,7 @@
 #include "geometry/ray.h"
 #include "integrators/common/path_segment.h"
 #include "integrators/common/scattering_point.h"
+#include "integrators/common/stored_scattering_point.h"
 #include "materials/bsdf.h"
 #include "spectral/sampled_spectrum.h"
 #include "spectral/sampled_wavelengths.h"
@@ -121,6 +122,16 @@ class SubpathWalk {
     float distance_squared() const { return length_squared(point_.p - previous_p_); }
     // This vertex is the exit of a jump through a profile solid (entered at the one before).
     bool after_jump() const { return after_jump_; }
+    // The vertex in compact form, before scatter() moves on: a medium point, or a surface point
+    // with a BSDF.
+    StoredScatteringPoint stored_vertex() const;
+    // A vertex that stored_vertex() gave, with its BSDF shaded again (in `memory`) as advance()
+    // or jump() shaded it, for the wavelengths it had then. Only `time` and the sampler's
+    // samples_per_pixel (the camera's footprint at the point) are not in the record, as every
+    // vertex of a subpath shares them.
+    static ScatteringPoint rebuild(const Scene &scene, const StoredScatteringPoint &stored,
+                                   const SampledWavelengths &lambda, float time, ScratchBuffer &memory,
+                                   int samples_per_pixel);
 
     // Samples how the path leaves the vertex and moves it onto that ray; empty when the path
     // ends here (no sample). A vertex after a jump samples its exit lobe.
@@ -149,6 +160,11 @@ class SubpathWalk {
     SampledSpectrum beta;
 
   private:
+    // The BSDF at a surface hit (null where it has no material): with its texture footprint,
+    // from the ray's differential if any, else from the camera's footprint when the scene
+    // reads one.
+    static BSDF surface_bsdf(const Scene &scene, SurfaceInteraction &si, const RayDifferential *differential,
+                             const SampledWavelengths &lambda, ScratchBuffer &memory, int samples_per_pixel);
     void leave(const SurfaceInteraction &from, Vec3f wi);
     // The re-radiated part of a fluorescent vertex's scattering, chosen by scatter().
     std::optional<WalkScatter> reradiate(const Reradiation &reradiation, Vec3f wo);
@@ -172,6 +188,7 @@ class SubpathWalk {
     ScatteringPoint point_;
     Vec3f previous_p_;
     bool after_jump_ = false;
+    bool regularized_ = false; // the vertex's BSDF
     // Product of eta^2 over the radiance-mode refractions (1 for importance).
     float eta_scale_ = 1;
     bool reradiation_allowed_ = false;

@@ -34,14 +34,14 @@ class LightPathStore {
     // The vertices added from now on form the next path.
     void start_path() { path_begin_ = used_; }
 
-    void push_back(const LightVertex &v) {
+    void push_back(const StoredLightVertex &v) {
         if (chunks_.empty() || used_ == chunks_[chunk_].capacity) next_chunk();
         chunks_[chunk_].vertices[used_++] = v;
         ++size_;
     }
 
     // The vertices added since start_path(); valid until clear().
-    std::span<const LightVertex> path() const {
+    std::span<const StoredLightVertex> path() const {
         if (chunks_.empty()) return {};
         return {chunks_[chunk_].vertices.get() + path_begin_, used_ - path_begin_};
     }
@@ -51,7 +51,7 @@ class LightPathStore {
 
   private:
     struct Chunk {
-        std::unique_ptr<LightVertex[]> vertices;
+        std::unique_ptr<StoredLightVertex[]> vertices;
         size_t capacity = 0;
     };
 
@@ -63,9 +63,9 @@ class LightPathStore {
         const size_t next = chunks_.empty() ? 0 : chunk_ + 1;
         if (next == chunks_.size()) chunks_.push_back(Chunk{});
         Chunk &chunk = chunks_[next];
-        if (chunk.capacity < needed) chunk = Chunk{std::make_unique<LightVertex[]>(needed), needed};
+        if (chunk.capacity < needed) chunk = Chunk{std::make_unique<StoredLightVertex[]>(needed), needed};
         if (path_length > 0) {
-            const LightVertex *from = chunks_[chunk_].vertices.get() + path_begin_;
+            const StoredLightVertex *from = chunks_[chunk_].vertices.get() + path_begin_;
             std::copy(from, from + path_length, chunk.vertices.get());
         }
         chunk_ = next;

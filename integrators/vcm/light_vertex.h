@@ -2,8 +2,9 @@
 // vertex, split in two by use):
 //
 // - LightVertex: a full scattering vertex, with its BSDF, for vertex connection (a camera vertex
-//   is joined to every vertex of the light path traced for its pixel). Few are read per camera
-//   path, so they can be large.
+//   is joined to every vertex of the light path traced for its pixel). It is kept through the
+//   iteration as a StoredLightVertex, without its BSDF, and rebuilt when its pixel's camera path
+//   is traced (SubpathWalk::rebuild).
 // - Photon: the compact record gathered by vertex merging, read in bulk by range queries, so it
 //   is kept small: 32 bytes, 44 with its position in the photon map (spatial/photon_map.h).
 //
@@ -17,6 +18,7 @@
 #include "core/octahedral.h"
 #include "integrators/common/photon_side.h"
 #include "integrators/common/scattering_point.h"
+#include "integrators/common/stored_scattering_point.h"
 #include "spectral/sampled_spectrum.h"
 
 #include <array>
@@ -56,7 +58,28 @@ struct Photon {
     static constexpr int MaxPathLength = (1 << 15) - 1;
     SampledSpectrum beta() const { return {beta_values[0], beta_values[1], beta_values[2], beta_values[3]}; }
 };
+// A LightVertex through the iteration: its point without the BSDF, and the rest as it was.
+struct StoredLightVertex {
+    // As LightVertex::beta, unaligned (see Photon).
+    std::array<float, NumWavelengths> beta_values;
+    float d_vcm, d_vc, d_vm;
+    uint16_t path_length;
+    bool secondary_terminated, after_jump, medium_start;
+    StoredScatteringPoint point;
+
+    StoredLightVertex() = default;
+    StoredLightVertex(const LightVertex &v, const StoredScatteringPoint &stored)
+        : beta_values{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, d_vcm(v.d_vcm), d_vc(v.d_vc), d_vm(v.d_vm),
+          path_length(v.path_length), secondary_terminated(v.secondary_terminated), after_jump(v.after_jump),
+          medium_start(v.medium_start), point(stored) {}
+    // The vertex with its point rebuilt.
+    LightVertex with(const ScatteringPoint &rebuilt) const {
+        return LightVertex{{beta_values[0], beta_values[1], beta_values[2], beta_values[3]},
+                           rebuilt, d_vcm, d_vc, d_vm, path_length, secondary_terminated, after_jump, medium_start};
+    }
+};
+
 static_assert(sizeof(Photon) == 32, "photons are kept compact: see the comment above");
-static_assert(sizeof(LightVertex) <= 160, "vcm keeps one for every light vertex of an iteration");
+static_assert(sizeof(StoredLightVertex) <= 96, "vcm keeps one for every light vertex of an iteration");
 
 } // namespace caustica

@@ -90,8 +90,24 @@ struct Iteration {
     float time; // of every path of the iteration (IterationRenderer::time)
 };
 
-// A light subpath's vertices, in the store of the thread that traced it (light_path_store.h).
+// The vertices of a light subpath that its pixel's camera subpath is joined to, with their BSDFs.
 using StoredPath = std::span<const LightVertex>;
+
+// The vertices trace_light_path keeps of one light subpath, as traced (their BSDFs in the
+// context's memory), each with its compact form for the iteration's store.
+struct TracedLightPath {
+    std::vector<LightVertex> vertices;
+    std::vector<StoredScatteringPoint> points;
+
+    void clear() {
+        vertices.clear();
+        points.clear();
+    }
+    void add(const LightVertex &v, const StoredScatteringPoint &point) {
+        vertices.push_back(v);
+        points.push_back(point);
+    }
+};
 
 // The photons of one wavelength group, either those on surfaces or those in media: the two are
 // never merged with each other (a surface camera vertex gathers over a disk, a medium one over a
@@ -169,7 +185,7 @@ struct LightPathContext {
     const Iteration &it;
     IterationPixelContext &pixel;
     const VcmWeights &w;
-    // Where the light vertices' BSDFs live: as long as the vertices are kept.
+    // Where the light vertices' BSDFs live, while the path's photons and splats are made.
     ScratchBuffer &bsdf_memory;
     // Light tracing (the t = 1 strategy) is done once per light path: not when it is traced again
     // for its connections.
@@ -255,12 +271,12 @@ SubpathMis light_start_mis(const Scene &scene, const VcmWeights &w, const LightP
 }
 
 // Traces the light subpath of one pixel with its group's wavelengths, keeping its non-specular
-// vertices as `store`'s current path and splatting their connections to the lens.
-void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, LightPathStore &store) {
+// vertices in `path` and splatting their connections to the lens.
+void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, TracedLightPath &path) {
     const Iteration &it = ctx.it;
     const Scene &scene = it.scene;
     Sampler &sampler = ctx.pixel.sampler;
-    store.start_path();
+    path.clear();
     const std::optional<LightPathStart> start = start_light_path(scene, sampler, lambda, it.time);
     if (!start) return;
     const Light &light = *start->light;
@@ -286,7 +302,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, Li
                       ScatteringPoint::in_medium_along(Ray{les.ray.o, les.ray.d, Infinity, it.time}, 0, light.medium()),
                       0, 0, 0, 1, lambda.secondary_terminated()};
         v.medium_start = true;
-        store.push_back(v);
+        path.add(v, StoredScatteringPoint{v.point.p, v.point.wo, SurfaceHit{}, false, false, light.medium()});
     }
 
     // The emitted flux is kept apart from the walk's throughput so that Russian roulette sees
@@ -315,7 +331,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, Li
             if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
                 const LightVertex v{start->flux * walk.beta, point, m.d_vcm, m.d_vc, m.d_vm, uint16_t(path_length),
                                     lambda.secondary_terminated(), walk.after_jump()};
-                store.push_back(v);
+                path.add(v, walk.stored_vertex());
                 if (it.use_vc) {
                     // Drawn whether or not the lens is joined, so that a light path traced
                     // again follows the same random numbers.
@@ -719,11 +735,12 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         medium_photons.emplace_back(photon_search_, photon_blocks);
     }
     // Light vertices are kept through the iteration only for vcm's connections, and not when
-    // they are traced again instead ("lightvertices" "retrace"); otherwise each thread's store
-    // holds one path at a time.
+    // they are traced again instead ("lightvertices" "retrace"). Each thread keeps its own,
+    // without their BSDFs, and a path as traced or rebuilt.
     const bool keep_light_vertices = use_vc && !retrace_light_paths_;
     tbb::enumerable_thread_specific<LightPathStore> light_vertices;
-    std::vector<StoredPath> light_paths(keep_light_vertices ? pixel_count : 0);
+    tbb::enumerable_thread_specific<TracedLightPath> light_path_in_use;
+    std::vector<std::span<const StoredLightVertex>> light_paths(keep_light_vertices ? pixel_count : 0);
     // One light path per pixel per completed iteration: a resumed render counts those of the
     // iterations it continues from.
     light_paths_traced_ = stats.pixel_samples;
@@ -757,13 +774,16 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         bool completed = renderer.for_each_pixel_in_order(iteration, kLightPathDimension, groups.pixels_by_group(),
                                                           [&](Vec2i, size_t index, IterationPixelContext &pixel) {
             const int g = groups.group_of_pixel(index);
-            LightPathStore &store = light_vertices.local();
-            if (!keep_light_vertices) store.clear();
-            ScratchBuffer &bsdf_memory = keep_light_vertices ? pixel.iteration_scratch : pixel.sample_scratch;
-            trace_light_path(LightPathContext{it, pixel, it.weights[g], bsdf_memory, true}, groups.wavelengths(g),
-                             store);
-            if (keep_light_vertices) light_paths[index] = store.path();
-            add_photons(store.path(), groups.wavelengths(g), surface_photons[g], medium_photons[g]);
+            TracedLightPath &path = light_path_in_use.local();
+            trace_light_path(LightPathContext{it, pixel, it.weights[g], pixel.sample_scratch, true},
+                             groups.wavelengths(g), path);
+            add_photons(path.vertices, groups.wavelengths(g), surface_photons[g], medium_photons[g]);
+            if (keep_light_vertices) {
+                LightPathStore &store = light_vertices.local();
+                store.start_path();
+                for (size_t i = 0; i < path.vertices.size(); ++i) store.push_back({path.vertices[i], path.points[i]});
+                light_paths[index] = store.path();
+            }
             ++traced;
         });
         light_paths_traced_ = traced;
@@ -788,20 +808,28 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         return renderer.for_each_pixel_in_order(iteration, 0, groups.pixels_by_group(),
                                                 [&](Vec2i pixel, size_t index, IterationPixelContext &ctx) {
             const int g = groups.group_of_pixel(index);
-            StoredPath light_path;
+            TracedLightPath &path = light_path_in_use.local();
+            path.clear();
             if (keep_light_vertices) {
-                light_path = light_paths[index];
+                // The pixel's light path of pass 1, shaded again (in this sample's memory) for
+                // the wavelengths each vertex had.
+                SampledWavelengths terminated = groups.wavelengths(g);
+                terminated.terminate_secondary();
+                for (const StoredLightVertex &v : light_paths[index]) {
+                    const SampledWavelengths &lambda = v.secondary_terminated ? terminated : groups.wavelengths(g);
+                    path.vertices.push_back(v.with(SubpathWalk::rebuild(scene, v.point, lambda, it.time,
+                                                                         ctx.sample_scratch,
+                                                                         ctx.sampler.samples_per_pixel())));
+                }
             } else if (use_vc) {
                 // The pixel's light path of pass 1 again, from its own random numbers (its BSDFs
                 // in this sample's memory), then back to the camera path's.
-                LightPathStore &retraced = light_vertices.local();
-                retraced.clear();
                 ctx.sampler.start_pixel_sample(pixel, iteration, kLightPathDimension);
                 trace_light_path(LightPathContext{it, ctx, it.weights[g], ctx.sample_scratch, false},
-                                 groups.wavelengths(g), retraced);
+                                 groups.wavelengths(g), path);
                 ctx.sampler.start_pixel_sample(pixel, iteration, 0);
-                light_path = retraced.path();
             }
+            const StoredPath light_path = path.vertices;
             SampledWavelengths lambda = groups.wavelengths(g);
             const SampledWavelengths group_lambda = lambda;
             ctx.sampler.get_1d(); // dimension 0 is the hero wavelength, fixed by the group here

@@ -442,7 +442,7 @@ void GeometryScene::commit() {
     committed_ = true;
 }
 
-bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si, SurfaceHit *hit) const {
+bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
     QueryContext context;
     rtcInitIntersectContext(&context.embree);
     context.t_max = ray.t_max;
@@ -476,7 +476,6 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si, SurfaceHit
     found.primitive = rayhit.hit.primID;
     found.uv = {rayhit.hit.u, rayhit.hit.v};
     fill_interaction(found, ray, rayhit.ray.tfar, si);
-    if (hit) *hit = found;
     return true;
 }
 
@@ -541,6 +540,7 @@ void GeometryScene::fill_interaction(const SurfaceHit &hit, const Ray &ray, floa
     si->medium_interface = primitive->attributes.medium_interface;
     const auto &lights = primitive->attributes.area_lights;
     si->area_light = index < lights.size() ? lights[index] : nullptr;
+    si->hit = hit;
 }
 
 bool GeometryScene::occluded(const Ray &ray) const {

@@ -15,7 +15,6 @@
 #include "geometry/alpha_mask.h"
 #include "geometry/interaction.h"
 #include "geometry/shape_group.h"
-#include "geometry/surface_hit.h"
 
 #include <embree3/rtcore.h>
 
@@ -64,10 +63,10 @@ class GeometryScene {
 
     // Queries, safe to call from many threads at once after commit().
     // Closest hit with 0 < t <= ray.t_max, with the geometry where it is at ray.time; fills every
-    // field of *si, and *hit if given.
-    bool intersect(const Ray &ray, SurfaceInteraction *si, SurfaceHit *hit = nullptr) const;
-    // The surface record of a hit that intersect() reported, rebuilt from the point si.p it
-    // reported and the direction si.wo: the same record, t aside (0 here), except that analytic
+    // field of *si.
+    bool intersect(const Ray &ray, SurfaceInteraction *si) const;
+    // The surface record of a hit that intersect() reported (si.hit), rebuilt from the point si.p
+    // and the direction si.wo: the same record, t aside (0 here), except that analytic
     // shapes and curves start from the point rather than from the ray, which may move their
     // fields by a few float ulps.
     SurfaceInteraction interaction(const SurfaceHit &hit, Vec3f p, Vec3f wo, float time) const;

@@ -3,6 +3,7 @@
 
 #include "core/vecmath.h"
 #include "geometry/ray.h"
+#include "geometry/surface_hit.h"
 
 namespace caustica {
 
@@ -36,6 +37,10 @@ struct SurfaceInteraction {
     // transparent cut-out (alpha_mask.h), 1 elsewhere. Rays meet such a surface only that often,
     // so photon density estimates here are divided by it.
     float coverage = 1;
+
+    // What the ray met, for GeometryScene::interaction to rebuild this record later; left
+    // without a slot for points that no ray found (sampled points on lights).
+    SurfaceHit hit;
 
     const Material *material = nullptr;      // null: a boundary between media only
     const Light *area_light = nullptr;       // emitter attached to this primitive, if any

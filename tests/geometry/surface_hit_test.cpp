@@ -89,8 +89,8 @@ TEST(SurfaceHit, RebuildsTheRecordIntersectReportedForEveryKindOfShape) {
         Ray ray{o, d * 3.f}; // not unit: the rebuilt record must not depend on |d|
         ray.time = rng.uniform();
         SurfaceInteraction si;
-        SurfaceHit hit;
-        ASSERT_TRUE(mixed.scene.intersect(ray, &si, &hit));
+        ASSERT_TRUE(mixed.scene.intersect(ray, &si));
+        const SurfaceHit &hit = si.hit;
         const SurfaceInteraction again = mixed.scene.interaction(hit, si.p, si.wo, ray.time);
         ++hits_per_shape[reinterpret_cast<uintptr_t>(si.material) / 16];
 
@@ -101,6 +101,7 @@ TEST(SurfaceHit, RebuildsTheRecordIntersectReportedForEveryKindOfShape) {
         EXPECT_EQ(again.coverage, si.coverage);
         EXPECT_EQ(again.time, si.time);
         EXPECT_EQ(again.wo, si.wo);
+        EXPECT_EQ(std::memcmp(&again.hit, &si.hit, sizeof(SurfaceHit)), 0);
         // From the point rather than the ray, analytic shapes and curves may differ by rounding.
         expect_near(again.p, si.p, 1e-5f, "p");
         EXPECT_NEAR(again.error_scale, si.error_scale, 1e-4f * std::max(1.f, si.error_scale));
@@ -123,10 +124,10 @@ TEST(SurfaceHit, RebuildsTheRecordIntersectReportedForEveryKindOfShape) {
 TEST(SurfaceHit, MovingInstancesAreRebuiltAtTheirTime) {
     MixedScene mixed;
     SurfaceInteraction si;
-    SurfaceHit hit;
     Ray ray{{3, -2.6f, -1}, {0, 0, -1}};
     ray.time = 0.5f;
-    ASSERT_TRUE(mixed.scene.intersect(ray, &si, &hit));
+    ASSERT_TRUE(mixed.scene.intersect(ray, &si));
+    const SurfaceHit hit = si.hit;
     ASSERT_EQ(reinterpret_cast<uintptr_t>(si.material), 9u * 16);
     const SurfaceInteraction same = mixed.scene.interaction(hit, si.p, si.wo, 0.5f);
     expect_near(same.n, si.n, 1e-5f, "n at the same time");

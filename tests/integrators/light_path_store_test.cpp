@@ -11,16 +11,16 @@ namespace caustica {
 namespace {
 
 // A vertex that names its path and its place on it.
-LightVertex vertex(int path, int index) {
-    LightVertex v{};
+StoredLightVertex vertex(int path, int index) {
+    StoredLightVertex v{};
     v.d_vcm = float(path);
     v.d_vc = float(index);
     return v;
 }
 
 // Adds paths of the given lengths, keeping the span of each.
-std::vector<std::span<const LightVertex>> add_paths(LightPathStore &store, const std::vector<int> &lengths) {
-    std::vector<std::span<const LightVertex>> spans;
+std::vector<std::span<const StoredLightVertex>> add_paths(LightPathStore &store, const std::vector<int> &lengths) {
+    std::vector<std::span<const StoredLightVertex>> spans;
     for (size_t p = 0; p < lengths.size(); ++p) {
         store.start_path();
         for (int i = 0; i < lengths[p]; ++i) store.push_back(vertex(int(p), i));
@@ -29,7 +29,7 @@ std::vector<std::span<const LightVertex>> add_paths(LightPathStore &store, const
     return spans;
 }
 
-void expect_paths(const std::vector<std::span<const LightVertex>> &spans, const std::vector<int> &lengths) {
+void expect_paths(const std::vector<std::span<const StoredLightVertex>> &spans, const std::vector<int> &lengths) {
     ASSERT_EQ(spans.size(), lengths.size());
     for (size_t p = 0; p < spans.size(); ++p) {
         ASSERT_EQ(spans[p].size(), size_t(lengths[p])) << "path " << p;
@@ -66,7 +66,7 @@ TEST(LightPathStore, ClearForgetsThePathsAndReusesTheChunks) {
     const std::vector<int> first(3000, 5), second(2000, 4);
     LightPathStore store;
     const auto old_spans = add_paths(store, first);
-    const LightVertex *first_vertex = old_spans.front().data();
+    const StoredLightVertex *first_vertex = old_spans.front().data();
     store.clear();
     EXPECT_EQ(store.size(), 0u);
     EXPECT_TRUE(store.path().empty());
