@@ -4,7 +4,8 @@
 // - LightVertex: a full scattering vertex, with its BSDF, for vertex connection (a camera vertex
 //   is joined to every vertex of the light path traced for its pixel). It is kept through the
 //   iteration as a StoredLightVertex, without its BSDF, and rebuilt when its pixel's camera path
-//   is traced (SubpathWalk::rebuild).
+//   is traced (SubpathWalk::rebuild): value for value as it was on triangles and bilinear
+//   patches, to rounding on analytic shapes and curves (GeometryScene::interaction).
 // - Photon: the compact record gathered by vertex merging, read in bulk by range queries, so it
 //   is kept small: 32 bytes, 44 with its position in the photon map (spatial/photon_map.h).
 //

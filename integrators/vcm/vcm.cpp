@@ -779,9 +779,12 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                              groups.wavelengths(g), path);
             add_photons(path.vertices, groups.wavelengths(g), surface_photons[g], medium_photons[g]);
             if (keep_light_vertices) {
+                // Only the vertices that a camera vertex can be joined to within maxdepth
+                // (complete_at): the path's last ones are photons only.
                 LightPathStore &store = light_vertices.local();
                 store.start_path();
-                for (size_t i = 0; i < path.vertices.size(); ++i) store.push_back({path.vertices[i], path.points[i]});
+                for (size_t i = 0; i < path.vertices.size() && path.vertices[i].path_length < it.max_depth; ++i)
+                    store.push_back({path.vertices[i], path.points[i]});
                 light_paths[index] = store.path();
             }
             ++traced;

@@ -61,10 +61,11 @@ class VCM final : public Integrator {
     int wavelength_groups_;
     PhotonSearch photon_search_;
     // vcm connects each camera path to the light path traced for its pixel. "store" keeps every
-    // light vertex of the iteration for that (a 160-byte LightVertex plus its BxDF, besides the
-    // 44-byte photon); "retrace" keeps only the photons and traces the pixel's light path again,
-    // from the same random numbers (so the image is the same, bit for bit), just before its
-    // camera path: a fifth of the memory for the time of tracing the light paths twice.
+    // light vertex of the iteration that a connection can use, without its BSDF (a 96-byte
+    // StoredLightVertex besides the 44-byte photon), and shades the pixel's again just before
+    // its camera path; "retrace" keeps only the photons and traces the pixel's light path again,
+    // from the same random numbers, instead: a third of the memory for the time of tracing the
+    // light paths twice. The two give the same image (light_vertex.h says to what precision).
     bool retrace_light_paths_ = false;
     uint64_t light_paths_traced_ = 0;
 };
