@@ -99,6 +99,7 @@ ScatteringPoint SubpathWalk::rebuild(const Scene &scene, const StoredScatteringP
     SurfaceInteraction si = scene.geometry.interaction(stored.hit, stored.p, stored.wo, time);
     BSDF bsdf;
     if (stored.exit_lobe) {
+        // The probe keeps only exits of the material whose profile the jump entered.
         bsdf = static_cast<const ProfileSubsurfaceMaterial *>(si.material)->subsurface_exit_bsdf(si, memory);
     } else {
         bsdf = surface_bsdf(scene, si, nullptr, lambda, memory, samples_per_pixel);

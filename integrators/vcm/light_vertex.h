@@ -59,6 +59,7 @@ struct Photon {
     static constexpr int MaxPathLength = (1 << 15) - 1;
     SampledSpectrum beta() const { return {beta_values[0], beta_values[1], beta_values[2], beta_values[3]}; }
 };
+
 // A LightVertex through the iteration: its point without the BSDF, and the rest as it was.
 struct StoredLightVertex {
     // As LightVertex::beta, unaligned (see Photon).

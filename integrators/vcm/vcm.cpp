@@ -91,7 +91,7 @@ struct Iteration {
 };
 
 // The vertices of a light subpath that its pixel's camera subpath is joined to, with their BSDFs.
-using StoredPath = std::span<const LightVertex>;
+using ShadedLightPath = std::span<const LightVertex>;
 
 // The vertices trace_light_path keeps of one light subpath, as traced (their BSDFs in the
 // context's memory), each with its compact form for the iteration's store.
@@ -388,7 +388,7 @@ struct CameraPathContext {
     float hero_scale;                    // see in_group_measure
     // What the camera subpath is completed with: the pixel's light subpath, and the photons of
     // its wavelength group.
-    const StoredPath &light_path;
+    const ShadedLightPath &light_path;
     const VcmPhotonMap &surface_photons, &medium_photons;
 };
 
@@ -603,7 +603,7 @@ float medium_emission_weight(const Scene &scene, const VcmWeights &w, SubpathMis
 // group's full wavelength set.
 SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pixel, int group,
                                   const CameraRay &camera_ray, SampledWavelengths &lambda,
-                                  const StoredPath &light_path, const VcmPhotonMap &surface_photons,
+                                  const ShadedLightPath &light_path, const VcmPhotonMap &surface_photons,
                                   const VcmPhotonMap &medium_photons) {
     const Scene &scene = it.scene;
     Sampler &sampler = pixel.sampler;
@@ -832,7 +832,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                                  groups.wavelengths(g), path);
                 ctx.sampler.start_pixel_sample(pixel, iteration, 0);
             }
-            const StoredPath light_path = path.vertices;
+            const ShadedLightPath light_path = path.vertices;
             SampledWavelengths lambda = groups.wavelengths(g);
             const SampledWavelengths group_lambda = lambda;
             ctx.sampler.get_1d(); // dimension 0 is the hero wavelength, fixed by the group here
