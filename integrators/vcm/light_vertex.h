@@ -31,7 +31,7 @@ struct LightVertex {
     SampledSpectrum beta;  // light subpath throughput, emitted flux included (first: its 16-byte
                            // alignment would otherwise pad the record)
     ScatteringPoint point; // bsdf in the iteration's scratch memory
-    float d_vcm, d_vc, d_vm;
+    float d_vcm, d_vc;
     uint16_t path_length;  // segments from the light to this vertex
     bool secondary_terminated;
     // The exit of a jump through a profile solid (vcm_mis.h): connected, never merged at, and
@@ -47,7 +47,7 @@ struct Photon {
     // As LightVertex::beta, unaligned (SampledSpectrum's 16-byte alignment would pad the
     // record).
     std::array<float, NumWavelengths> beta_values;
-    float d_vcm, d_vm;
+    float d_vcm, d_vc;
     uint32_t wo;           // octahedral-encoded direction towards the previous vertex
     // Octahedral-encoded geometric normal, coarsely: merging only gathers photons that lie on a
     // surface oriented like the camera vertex's, within 60 degrees (see photon_side.h). Unused
@@ -64,20 +64,20 @@ struct Photon {
 struct StoredLightVertex {
     // As LightVertex::beta, unaligned (see Photon).
     std::array<float, NumWavelengths> beta_values;
-    float d_vcm, d_vc, d_vm;
+    float d_vcm, d_vc;
     uint16_t path_length;
     bool secondary_terminated, after_jump, medium_start;
     StoredScatteringPoint point;
 
     StoredLightVertex() = default;
     StoredLightVertex(const LightVertex &v, const StoredScatteringPoint &stored)
-        : beta_values{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, d_vcm(v.d_vcm), d_vc(v.d_vc), d_vm(v.d_vm),
+        : beta_values{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, d_vcm(v.d_vcm), d_vc(v.d_vc),
           path_length(v.path_length), secondary_terminated(v.secondary_terminated), after_jump(v.after_jump),
           medium_start(v.medium_start), point(stored) {}
     // The vertex with its point rebuilt.
     LightVertex with(const ScatteringPoint &rebuilt) const {
         return LightVertex{{beta_values[0], beta_values[1], beta_values[2], beta_values[3]},
-                           rebuilt, d_vcm, d_vc, d_vm, path_length, secondary_terminated, after_jump, medium_start};
+                           rebuilt, d_vcm, d_vc, path_length, secondary_terminated, after_jump, medium_start};
     }
 };
 

@@ -126,7 +126,7 @@ void add_photons(std::span<const LightVertex> path, const SampledWavelengths &la
         if (point.in_medium()) beta = over_sigma_s(beta, *point.medium, point.p, lambda);
         const Photon photon{{beta[0], beta[1], beta[2], beta[3]},
                             v.d_vcm,
-                            v.d_vm,
+                            v.d_vc,
                             encode_octahedral(point.wo),
                             point.in_medium() ? uint16_t(0) : encode_octahedral_coarse(point.ng),
                             v.path_length,
@@ -256,8 +256,7 @@ void connect_start_to_camera(const LightPathContext &ctx, const LightPathStart &
 // which also sets an environment light's directional density through a portal. A start in an
 // emissive medium, which next-event estimation does not sample, has the light subpath's choice
 // for both (connect_to_medium_start joins camera vertices to it).
-SubpathMis light_start_mis(const Scene &scene, const VcmWeights &w, const LightPathStart &start,
-                           const ScatteringPoint &first) {
+SubpathMis light_start_mis(const Scene &scene, const LightPathStart &start, const ScatteringPoint &first) {
     const Light &light = *start.light;
     const LightLeSample &les = start.les;
     const LightSampleContext receiver{first.p, first.ng, first.ns()};
@@ -266,7 +265,7 @@ SubpathMis light_start_mis(const Scene &scene, const VcmWeights &w, const LightP
         const float pdf_li = light.type() == LightType::Infinite ? light.pdf_li(receiver, -les.ray.d) : 0.f;
         direct_pdf = next_event_density(light, scene.light_sampler->pmf(receiver, &light), les.pdf_pos, pdf_li);
     }
-    return SubpathMis::light_start(w, start.pmf * les.pdf_pos * les.pdf_dir, direct_pdf,
+    return SubpathMis::light_start(start.pmf * les.pdf_pos * les.pdf_dir, direct_pdf,
                                    start.at_infinity() ? 1.f : start.cos_origin, !is_delta_light(light.type()));
 }
 
@@ -300,7 +299,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, Tr
         start_sigma = mean_extinction(*light.medium(), les.ray.o, lambda);
         LightVertex v{les.L / (start->pmf * les.pdf_pos),
                       ScatteringPoint::in_medium_along(Ray{les.ray.o, les.ray.d, Infinity, it.time}, 0, light.medium()),
-                      0, 0, 0, 1, lambda.secondary_terminated()};
+                      0, 0, 1, lambda.secondary_terminated()};
         v.medium_start = true;
         path.add(v, StoredScatteringPoint{v.point.p, v.point.wo, SurfaceHit{}, false, false, light.medium()});
     }
@@ -319,17 +318,15 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, Tr
         }
         ++path_length;
         const bool first = path_length == first_length;
-        if (first) m = light_start_mis(scene, ctx.w, *start, point);
+        if (first) m = light_start_mis(scene, *start, point);
         m.arrive(first && start->at_infinity() ? 1.f : walk.distance_squared(), point.cosine(point.wo));
         if (medium_start && first) {
-            const float free_flight = mis(collision_density(start_sigma, std::sqrt(walk.distance_squared())));
-            m.d_vc *= free_flight;
-            m.d_vm *= free_flight;
+            m.d_vc *= mis(collision_density(start_sigma, std::sqrt(walk.distance_squared())));
         }
         // The vertex, then the exit of a profile solid that its sampled direction enters.
         while (true) {
             if (point.in_medium() || is_non_specular(point.bsdf.flags())) {
-                const LightVertex v{start->flux * walk.beta, point, m.d_vcm, m.d_vc, m.d_vm, uint16_t(path_length),
+                const LightVertex v{start->flux * walk.beta, point, m.d_vcm, m.d_vc, uint16_t(path_length),
                                     lambda.secondary_terminated(), walk.after_jump()};
                 path.add(v, walk.stored_vertex());
                 if (it.use_vc) {
@@ -449,7 +446,7 @@ SampledSpectrum connect(const CameraPathContext &ctx, const CameraVertex &z, con
     const MergeWeights &light_merge = v.after_jump ? NoMerge : ctx.w.at(light.in_medium());
     const float light_pdf_reverse = v.after_jump ? 1.f : at_light.pdf_reverse;
     const float camera_pdf_reverse = z.after_jump ? 1.f : at_camera.pdf_reverse;
-    const SubpathMis light_m{v.d_vcm, v.d_vc, v.d_vm};
+    const SubpathMis light_m{v.d_vcm, v.d_vc};
     const float w_light = light_m.connected(camera_dir_pdf_a, light_pdf_reverse, light_merge);
     const float w_camera = z.m.connected(light_dir_pdf_a, camera_pdf_reverse, ctx.w.at(camera.in_medium()));
     SampledSpectrum L = at_camera.f * at_light.f * v.beta * (1 / (dist2 * (w_light + 1 + w_camera)));
@@ -512,7 +509,7 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
         const BxDFEvaluation e = point.bsdf.evaluate(point.wo, wi, TransportMode::Radiance);
         if (e.f.is_black()) return;
         const float camera_rev_pdf = z.after_jump ? 1.f : e.pdf_reverse;
-        const float w_light = SubpathMis{photon.d_vcm, 0, photon.d_vm}.merged(e.pdf_forward, here);
+        const float w_light = SubpathMis{photon.d_vcm, photon.d_vc}.merged(e.pdf_forward, here);
         const float w_camera = z.m.merged(camera_rev_pdf, here);
         // Photon density is flux per unit of geometric area; the shading-normal BSDF turns it
         // into radiance with |wi.ns| / |wi.ng| (the adjoint correction, Veach 1997, 5.3).
@@ -547,8 +544,7 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
 // r -> 0) weighs each photon by sigma_s(y) / sigma_s(z): in a heterogeneous medium, photons from
 // denser fog around a thin spot then come back as fireflies. No cosine appears: the kernel is
 // a sphere, not a disk, and the vertex has no surface. MIS: the merge at a medium vertex has
-// eta = V N_group times the density of the connection ending there (vcm_mis.h), with d_vm
-// rescaled from its surface reference by d_vm_scale.
+// eta = V N_group times the density of the connection ending there (vcm_mis.h).
 SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex &z) {
     const ScatteringPoint &point = z.point;
     const MergeWeights &here = ctx.w.medium;
@@ -560,7 +556,7 @@ SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex
         // The phase function is its own sampling density, and symmetric: it is also the density
         // with which the camera (from wo) and the light subpath (from wi) sample each other.
         const float p = phase.p(point.wo, wi);
-        const float w_light = SubpathMis{photon.d_vcm, 0, photon.d_vm}.merged(p, here);
+        const float w_light = SubpathMis{photon.d_vcm, photon.d_vc}.merged(p, here);
         const float w_camera = z.m.merged(p, here);
         sum += in_group_measure(photon.beta() * (p / (w_light + 1 + w_camera)),
                                 ctx.lambda.secondary_terminated() || photon.secondary_terminated != 0,

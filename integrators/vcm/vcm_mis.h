@@ -1,13 +1,15 @@
 // The recursive multiple-importance quantities of vertex connection and merging (Georgiev,
 // Krivanek, Davidovic and Slusallek 2012, "Light transport simulation with vertex connection and
 // merging"; the recursion is derived in Georgiev's tech. report "Implementing vertex connection
-// and merging", 2012, section 5, whose names d^VCM, d^VC, d^VM are kept here).
+// and merging", 2012, section 5, whose names d^VCM and d^VC are kept here).
 //
-// A subpath carries, at its last vertex, three partial sums over the strategies that could have
+// A subpath carries, at its last vertex, two partial sums over the strategies that could have
 // produced more of it from the other end:
 //   d_vcm  1 / (density of the last vertex), for the connection that ends at the vertex before;
-//   d_vc   the sums used when the path is completed by a connection (or by hitting a light);
-//   d_vm   the same, used when it is completed by a merge.
+//   d_vc   the sum used when the path is completed by a connection (or by hitting a light).
+// The report's third sum, d_vm, used when the path is completed by a merge, is not carried:
+// here it is always d_vc / eta^2 at the vertex merged at (MergeWeights::vc_to_vm says why), so a
+// stored light vertex needs only the two.
 // The weights are power-heuristic (mis(x) = x^2), and every density is in the area measure at
 // its vertex; the conversion from solid angle happens lazily, the distance squared when a vertex
 // is reached and the cosines as each is known. A vertex inside a participating medium has no
@@ -26,7 +28,7 @@
 // A light subpath that starts inside an emissive medium (integrators/common/medium_emission.h)
 // starts as a light does, with cos_light 1: the camera side's density of the start has the free
 // flight's density where a light has its cosine, a factor known once the first vertex is, which
-// the caller then applies to d_vc and d_vm.
+// the caller then applies to d_vc.
 //
 // Connections can be switched off (bpm has none; vcm has both families): their terms are then
 // removed from every sum, so the remaining weights still sum to one.
@@ -45,50 +47,39 @@ inline float mis(float density_ratio) { return density_ratio * density_ratio; }
 // among VCM's strategies is the "point-point 3D" estimator of Krivanek et al. 2014, "Unifying
 // points, beams, and paths in volumetric light transport simulation").
 //
-// d_vm is kept relative to a merge on a SURFACE (its terms are divided by eta_surface rather than
-// by the eta of whatever vertex it ends up merged at, which is unknown while the subpath is being
-// extended). With eta the same at every vertex this is Georgiev's recursion unchanged; a medium
-// vertex contributes merge_ratio = mis(eta_medium / eta_surface) where a surface vertex
-// contributes 1, and a merge at a medium vertex rescales d_vm by d_vm_scale, the inverse. (Every
-// term of d_vm is a strategy's density over the merge's, whose eta is the merge vertex's; no
-// other strategy's density contains that eta, so the rescaling is exact.)
+// The report's d_vm needs no recursion of its own. d_vc and d_vm sum over the same strategies
+// (the connections among them only when connecting is on), each strategy's density over that of
+// completing the path at the subpath's last vertex: by a connection for d_vc, by a merge for
+// d_vm. A merge there has eta times the connection's density, with the eta of the vertex merged
+// at, so d_vm = d_vc * mis(1 / eta) on surfaces and in media alike: one sum serves both.
 struct MergeWeights {
-    float vm_weight = 0;   // mis(eta) when merging is on: a merge at this vertex relative to a connection
-    float vc_weight = 0;   // mis(1 / eta) when connecting is on: the converse, for a merge here
-    float merge_ratio = 1; // mis(eta / eta_surface), see above
-    float d_vm_scale = 1;  // mis(eta_surface / eta)
+    float vm_weight = 0; // mis(eta) when merging is on: a merge at this vertex relative to a connection
+    float vc_weight = 0; // mis(1 / eta) when connecting is on: the converse, for a merge here
+    float vc_to_vm = 0;  // mis(1 / eta): the report's d_vm at a merge here, from d_vc (see above)
 };
 
-// The weights of a vertex that cannot be merged at (see above): vm_weight and merge_ratio zero.
-inline constexpr MergeWeights NoMerge{0, 0, 0, 1};
+// The weights of a vertex that cannot be merged at (see above).
+inline constexpr MergeWeights NoMerge{0, 0, 0};
 
 // Per-iteration constants.
 struct VcmWeights {
     MergeWeights surface, medium;
-    float vc_enabled = 0;     // 1 when connecting is on (it weighs the connection terms of d_vc)
-    // mis(1 / eta_surface): a camera path hitting the light, relative to a surface merge (d_vm's
-    // reference). That strategy exists with or without connections.
-    float light_hit_weight = 0;
+    float vc_enabled = 0; // 1 when connecting is on (it weighs the connection terms of d_vc)
 
     const MergeWeights &at(bool in_medium) const { return in_medium ? medium : surface; }
 
     // Merging is always on (bpm and vcm both merge); use_vc: connections too (vcm).
     static VcmWeights make(bool use_vc, float eta_surface, float eta_medium) {
         VcmWeights w;
-        w.surface.vm_weight = mis(eta_surface);
-        w.surface.vc_weight = use_vc ? mis(1 / eta_surface) : 0.f;
-        w.medium.vm_weight = mis(eta_medium);
-        w.medium.vc_weight = use_vc ? mis(1 / eta_medium) : 0.f;
-        w.medium.merge_ratio = mis(eta_medium / eta_surface);
-        w.medium.d_vm_scale = mis(eta_surface / eta_medium);
+        w.surface = MergeWeights{mis(eta_surface), use_vc ? mis(1 / eta_surface) : 0.f, mis(1 / eta_surface)};
+        w.medium = MergeWeights{mis(eta_medium), use_vc ? mis(1 / eta_medium) : 0.f, mis(1 / eta_medium)};
         w.vc_enabled = use_vc ? 1.f : 0.f;
-        w.light_hit_weight = mis(1 / eta_surface);
         return w;
     }
 };
 
 struct SubpathMis {
-    float d_vcm = 0, d_vc = 0, d_vm = 0;
+    float d_vcm = 0, d_vc = 0;
 
     // A light subpath leaves its light (tech. report eqs. 31-33): emission_pdf, the density of the
     // emitted ray (light choice, position and direction); direct_pdf, the density with which
@@ -96,12 +87,10 @@ struct SubpathMis {
     // times position density; for lights at infinity, the direction density); cos_light, the
     // cosine of the ray with the light's surface (1 at infinity); hittable, whether a camera path
     // can reach the light (not a delta light).
-    static SubpathMis light_start(const VcmWeights &w, float emission_pdf, float direct_pdf, float cos_light,
-                                  bool hittable) {
+    static SubpathMis light_start(float emission_pdf, float direct_pdf, float cos_light, bool hittable) {
         SubpathMis m;
         m.d_vcm = mis(direct_pdf / emission_pdf);
         m.d_vc = hittable ? mis(cos_light / emission_pdf) : 0.f;
-        m.d_vm = m.d_vc * w.light_hit_weight;
         return m;
     }
 
@@ -131,7 +120,6 @@ struct SubpathMis {
         d_vcm *= mis(dist2);
         d_vcm /= mis(cos_in);
         d_vc /= mis(cos_in);
-        d_vm /= mis(cos_in);
     }
 
     // The subpath continues from this vertex in a direction sampled with solid-angle density
@@ -143,12 +131,10 @@ struct SubpathMis {
         if (specular) {
             d_vcm = 0;
             d_vc *= mis(cos_out);
-            d_vm *= mis(cos_out);
             return;
         }
         const float g = mis(cos_out / pdf_dir);
         d_vc = g * (d_vc * mis(pdf_rev) + w.vc_enabled * d_vcm + here.vm_weight);
-        d_vm = g * (d_vm * mis(pdf_rev) + d_vcm * w.surface.vc_weight + here.merge_ratio);
         d_vcm = mis(1 / pdf_dir);
     }
 
@@ -167,9 +153,9 @@ struct SubpathMis {
 
     // This vertex is merged with a vertex of the other subpath: pdf_rev, the density with which
     // the other subpath's scattering function there samples this subpath's predecessor (eqs.
-    // 42-43, with d_vm rescaled from its surface reference, see MergeWeights).
+    // 42-43, with the report's d_vm from d_vc, see MergeWeights).
     float merged(float pdf_rev, const MergeWeights &here) const {
-        return d_vcm * here.vc_weight + d_vm * here.d_vm_scale * mis(pdf_rev);
+        return d_vcm * here.vc_weight + d_vc * here.vc_to_vm * mis(pdf_rev);
     }
 
     // This camera subpath has reached an emitter: direct_pdf, the density with which light
@@ -188,7 +174,6 @@ struct SubpathMis {
     // when this is a camera subpath (the light's exit is there).
     void jump(const VcmWeights &w, const MergeWeights &here, float pdf_rev_exit) {
         d_vc = d_vc * mis(pdf_rev_exit) + w.vc_enabled * d_vcm + here.vm_weight;
-        d_vm = d_vm * mis(pdf_rev_exit) + d_vcm * w.surface.vc_weight + here.merge_ratio;
         d_vcm = 0;
     }
 };

@@ -137,13 +137,12 @@ std::vector<Strategy> strategies(const SyntheticPath &path, const VcmWeights &w,
     // The recursion along both subpaths, as trace_light_path and trace_camera_path run it.
     const float emission_pdf = path.light_choice_pdf_pos * path.emission_pdf_dir;
     std::vector<SubpathMis> light(k + 1), camera(k + 1);
-    SubpathMis m = SubpathMis::light_start(w, emission_pdf, path.light_choice_pdf_pos,
+    SubpathMis m = SubpathMis::light_start(emission_pdf, path.light_choice_pdf_pos,
                                            path.medium_start() ? 1.f : path.cosine(0, 1), true);
     for (int i = 1; i < k; ++i) {
         m.arrive(path.dist2(i - 1, i), path.cosine(i, i - 1));
         if (i == 1 && path.medium_start() && !path.light_side_drops_free_flight) {
             m.d_vc *= mis(path.start_factor());
-            m.d_vm *= mis(path.start_factor());
         }
         light[i] = m;
         m.scatter(w, w.at(x[i].in_medium()), path.cosine(i, i + 1), x[i].fwd, x[i].rev, x[i].specular);
@@ -198,7 +197,7 @@ std::vector<Strategy> strategies(const SyntheticPath &path, const VcmWeights &w,
     for (int j = 1; j < k; ++j) {
         if (x[j].specular) continue;
         const MergeWeights &here = w.at(x[j].in_medium());
-        const float w_light = SubpathMis{light[j].d_vcm, 0, light[j].d_vm}.merged(x[j].rev, here);
+        const float w_light = light[j].merged(x[j].rev, here);
         const float w_camera = camera[j].merged(x[j].fwd, here);
         out.push_back({"merge", j, product(j, j) * path.eta(j), 1 / (w_light + 1 + w_camera)});
     }
@@ -260,14 +259,14 @@ TEST(VcmMis, WeightsOfLightPathsFromAnEmissiveMediumAreThePowerHeuristic) {
 }
 
 // Negative controls. Weighing merges in media as if they were on surfaces (the volume kernel's
-// eta and the rescaling of d_vm dropped) is still a partition of unity, but not the power
-// heuristic of the true densities: the comparison with the explicit weights catches it. Leaving
-// the camera's hit on the light out of d_vm (light_hit_weight zero) breaks the partition itself.
+// eta dropped) is still a partition of unity, but not the power heuristic of the true densities:
+// the comparison with the explicit weights catches it. Reading d_vc as the report's d_vm at a
+// merge, without the merge's eta (vc_to_vm one), breaks the partition itself.
 // For a start in a medium, leaving the free flight's density out of the light subpath's sums
 // (as if the start had a cosine of 1) breaks it too.
 TEST(VcmMis, WrongWeightsFail) {
     std::mt19937 rng(99);
-    int medium_as_surface = 0, hit_left_out = 0, with_medium = 0;
+    int medium_as_surface = 0, eta_left_out = 0, with_medium = 0;
     for (int trial = 0; trial < 500; ++trial) {
         const SyntheticPath path = random_path(rng, 4);
         bool has_medium = false;
@@ -279,12 +278,12 @@ TEST(VcmMis, WrongWeightsFail) {
             medium_as_surface += check(path, wrong, true).weight > 1e-2;
         }
         wrong = weights_for(path, true);
-        wrong.light_hit_weight = 0;
-        hit_left_out += check(path, wrong, true).sum > 1e-3;
+        wrong.surface.vc_to_vm = wrong.medium.vc_to_vm = 1;
+        eta_left_out += check(path, wrong, true).sum > 1e-3;
     }
     EXPECT_GT(with_medium, 100);
     EXPECT_GT(medium_as_surface, with_medium / 2);
-    EXPECT_GT(hit_left_out, 100);
+    EXPECT_GT(eta_left_out, 100);
 
     int free_flight_left_out = 0;
     for (int trial = 0; trial < 500; ++trial) {
