@@ -65,7 +65,7 @@ WalkEvent SubpathWalk::advance() {
         if (beta.is_black()) return WalkEvent::Ended;
         if (!hit) return WalkEvent::Escaped;
         BSDF bsdf = surface_bsdf(scene_, si_, differential_ ? &*differential_ : nullptr, lambda(), bsdf_memory_,
-                                 sampler_.samples_per_pixel());
+                                 media_memory_, sampler_.samples_per_pixel());
         regularized_ = bsdf && regularize_ && any_non_specular_bounce_;
         if (regularized_) bsdf.regularize(bsdf_memory_);
         if (bsdf || si_.area_light) {
@@ -77,13 +77,14 @@ WalkEvent SubpathWalk::advance() {
 }
 
 BSDF SubpathWalk::surface_bsdf(const Scene &scene, SurfaceInteraction &si, const RayDifferential *differential,
-                               const SampledWavelengths &lambda, ScratchBuffer &memory, int samples_per_pixel) {
+                               const SampledWavelengths &lambda, ScratchBuffer &memory, ScratchBuffer *media_memory,
+                               int samples_per_pixel) {
     if (!si.material) return BSDF();
     // Scenes without textures have neither a footprint nor differentials: nothing reads them.
     if (differential || scene.camera_footprint)
         compute_differentials(si, differential, scene.camera_footprint ? &*scene.camera_footprint : nullptr,
                               samples_per_pixel);
-    return shade(si, lambda, memory);
+    return shade(si, lambda, memory, media_memory);
 }
 
 StoredScatteringPoint SubpathWalk::stored_vertex() const {
@@ -102,7 +103,7 @@ ScatteringPoint SubpathWalk::rebuild(const Scene &scene, const StoredScatteringP
         // The probe keeps only exits of the material whose profile the jump entered.
         bsdf = static_cast<const ProfileSubsurfaceMaterial *>(si.material)->subsurface_exit_bsdf(si, memory);
     } else {
-        bsdf = surface_bsdf(scene, si, nullptr, lambda, memory, samples_per_pixel);
+        bsdf = surface_bsdf(scene, si, nullptr, lambda, memory, nullptr, samples_per_pixel);
         if (stored.regularized) bsdf.regularize(memory);
     }
     return ScatteringPoint::on_surface(si, bsdf, stored.medium);

@@ -123,8 +123,12 @@ class SubpathWalk {
     // This vertex is the exit of a jump through a profile solid (entered at the one before).
     bool after_jump() const { return after_jump_; }
     // The vertex in compact form, before scatter() moves on: a medium point, or a surface point
-    // with a BSDF.
+    // with a BSDF. Its medium must outlive the record: a walk whose records are kept past the
+    // BSDFs' memory makes the media it meets there in `memory` (keep_media_in).
     StoredScatteringPoint stored_vertex() const;
+    // Media that the walk makes at the surfaces it enters (a random walk's interior under a
+    // textured colour) go to `memory` instead of the BSDFs' memory.
+    void keep_media_in(ScratchBuffer &memory) { media_memory_ = &memory; }
     // A vertex that stored_vertex() gave, with its BSDF shaded again (in `memory`) as advance()
     // or jump() shaded it, for the wavelengths it had then. Only `time` and the sampler's
     // samples_per_pixel (the camera's footprint at the point) are not in the record, as every
@@ -164,7 +168,8 @@ class SubpathWalk {
     // from the ray's differential if any, else from the camera's footprint when the scene
     // reads one.
     static BSDF surface_bsdf(const Scene &scene, SurfaceInteraction &si, const RayDifferential *differential,
-                             const SampledWavelengths &lambda, ScratchBuffer &memory, int samples_per_pixel);
+                             const SampledWavelengths &lambda, ScratchBuffer &memory, ScratchBuffer *media_memory,
+                             int samples_per_pixel);
     void leave(const SurfaceInteraction &from, Vec3f wi);
     // The re-radiated part of a fluorescent vertex's scattering, chosen by scatter().
     std::optional<WalkScatter> reradiate(const Reradiation &reradiation, Vec3f wo);
@@ -174,6 +179,7 @@ class SubpathWalk {
     SampledWavelengths &lambda_;
     Sampler &sampler_;
     ScratchBuffer &bsdf_memory_;
+    ScratchBuffer *media_memory_ = nullptr; // keep_media_in()
     uint64_t &rays_;
     bool reverse_densities_;
 

@@ -187,6 +187,9 @@ struct LightPathContext {
     const VcmWeights &w;
     // Where the light vertices' BSDFs live, while the path's photons and splats are made.
     ScratchBuffer &bsdf_memory;
+    // Where the media the path makes at surfaces live, when its vertices are kept through the
+    // iteration (their records point to them); null: with the BSDFs.
+    ScratchBuffer *kept_media;
     // Light tracing (the t = 1 strategy) is done once per light path: not when it is traced again
     // for its connections.
     bool connect_to_lens;
@@ -308,6 +311,7 @@ void trace_light_path(const LightPathContext &ctx, SampledWavelengths lambda, Tr
     // the throughput on the path tracer's scale. The path leaves the light into the medium
     // around it (for an area light, the medium outside its shape, the side it emits to).
     SubpathWalk walk(scene, TransportMode::Importance, lambda, sampler, ctx.bsdf_memory, ctx.pixel.rays, true);
+    if (ctx.kept_media) walk.keep_media_in(*ctx.kept_media);
     walk.start(les.ray, light.medium(), SampledSpectrum(1.f));
     const int first_length = path_length + 1;
     while (walk.advance() == WalkEvent::Vertex) {
@@ -736,6 +740,9 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     const bool keep_light_vertices = use_vc && !retrace_light_paths_;
     tbb::enumerable_thread_specific<LightPathStore> light_vertices;
     tbb::enumerable_thread_specific<TracedLightPath> light_path_in_use;
+    // The media that kept light vertices lie in, when a surface made them (a random walk's
+    // interior under a textured colour): the vertices' records point to them.
+    tbb::enumerable_thread_specific<ScratchBuffer> kept_media;
     std::vector<std::span<const StoredLightVertex>> light_paths(keep_light_vertices ? pixel_count : 0);
     // One light path per pixel per completed iteration: a resumed render counts those of the
     // iterations it continues from.
@@ -761,6 +768,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         // Pass 1: one light subpath per pixel, connected to the lens, its vertices made photons
         // (and stored, for connections, with "store").
         for (auto &store : light_vertices) store.clear();
+        for (ScratchBuffer &media : kept_media) media.reset();
         for (int g = 0; g < groups.count(); ++g) {
             surface_photons[g].clear();
             medium_photons[g].clear();
@@ -771,7 +779,8 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                                                           [&](Vec2i, size_t index, IterationPixelContext &pixel) {
             const int g = groups.group_of_pixel(index);
             TracedLightPath &path = light_path_in_use.local();
-            trace_light_path(LightPathContext{it, pixel, it.weights[g], pixel.sample_scratch, true},
+            trace_light_path(LightPathContext{it, pixel, it.weights[g], pixel.sample_scratch,
+                                              keep_light_vertices ? &kept_media.local() : nullptr, true},
                              groups.wavelengths(g), path);
             add_photons(path.vertices, groups.wavelengths(g), surface_photons[g], medium_photons[g]);
             if (keep_light_vertices) {
@@ -824,7 +833,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                 // The pixel's light path of pass 1 again, from its own random numbers (its BSDFs
                 // in this sample's memory), then back to the camera path's.
                 ctx.sampler.start_pixel_sample(pixel, iteration, kLightPathDimension);
-                trace_light_path(LightPathContext{it, ctx, it.weights[g], ctx.sample_scratch, false},
+                trace_light_path(LightPathContext{it, ctx, it.weights[g], ctx.sample_scratch, nullptr, false},
                                  groups.wavelengths(g), path);
                 ctx.sampler.start_pixel_sample(pixel, iteration, 0);
             }

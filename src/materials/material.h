@@ -81,8 +81,12 @@ class Material {
 using MaterialPtr = std::shared_ptr<const Material>;
 
 // What a path meets at a surface point with a material: its BSDF, and (in si.interior) the
-// medium inside, which medium_after() needs when the path crosses into it. Both live in scratch.
-// A bump or normal map of the material (of the chosen one, for a mix) first tilts si.shading.
-BSDF shade(SurfaceInteraction &si, const SampledWavelengths &lambda, ScratchBuffer &scratch);
+// medium inside, which medium_after() needs when the path crosses into it. Both live in scratch,
+// unless media_scratch is given: a medium made for this point (a random walk's interior under a
+// textured colour) then lives there, for a caller that keeps points inside it longer than their
+// BSDFs. A bump or normal map of the material (of the chosen one, for a mix) first tilts
+// si.shading.
+BSDF shade(SurfaceInteraction &si, const SampledWavelengths &lambda, ScratchBuffer &scratch,
+           ScratchBuffer *media_scratch = nullptr);
 
 } // namespace caustica

@@ -46,10 +46,19 @@ INSTANTIATE_TEST_SUITE_P(Integrators, PhotonIntegrator, ::testing::Values("sppm"
 
 // Writes the transport scene `source` to `path` with its Integrator directive replaced by
 // `integrator` and its stage included from the source tree; with `sphere_as_mesh`, its sphere of
-// radius 0.3 becomes the octahedron of the same radius.
+// radius 0.3 becomes the octahedron of the same radius; with `block_material`, its block's
+// dielectric becomes that material (after the given Texture directives).
 void write_transport_scene(const std::string &source, const std::string &integrator, const std::string &path,
-                           bool sphere_as_mesh = false) {
+                           bool sphere_as_mesh = false, const std::string &block_material = "",
+                           const std::string &textures = "") {
     std::string text = read_text(source);
+    if (!block_material.empty()) {
+        const std::string glass = "Material \"dielectric\" \"float eta\" [ 1.5 ]";
+        const size_t g = text.find(glass);
+        ASSERT_NE(g, std::string::npos) << source;
+        text.replace(g, glass.size(), block_material);
+        text.replace(text.find("WorldBegin"), 10, "WorldBegin\n" + textures);
+    }
     const size_t at = text.find("Integrator \"path\"");
     ASSERT_NE(at, std::string::npos) << source;
     text.replace(at, text.find('\n', at) - at, integrator);
@@ -80,19 +89,28 @@ void write_transport_scene(const std::string &source, const std::string &integra
 //   direction reversed changes 3135 of the fog block's values.
 // - within rounding with the blocks' sphere, which is rebuilt from its point rather than from
 //   the ray that found it, so that its normal may move by a few float ulps.
+// The skin block is the glass block made of Disney's random-walk subsurface under a textured
+// colour, whose interior medium is made anew at every entry (DisneyMaterial::interior_medium):
+// light vertices inside it must keep that medium through the iteration, not point into the
+// memory of the sample that made it (which crashed the render before the medium was kept).
 TEST(PhotonIntegratorParameters, RetracedLightPathsGiveTheStoredImage) {
     const std::string dir = scratch_dir("photon-retrace");
+    const std::string checks = "Texture \"checks\" \"spectrum\" \"checkerboard\" \"float uscale\" [ 4 ] "
+                               "\"float vscale\" [ 4 ] \"rgb tex1\" [ 0.9 0.6 0.5 ] \"rgb tex2\" [ 0.5 0.8 0.9 ]\n";
+    const std::string skin = "Material \"disney\" \"texture baseColor\" \"checks\" \"rgb scatterDistance\" [ 0.3 0.2 0.1 ]";
     for (bool sphere_as_mesh : {true, false})
-        for (const char *name : {"glass-block", "fog-block"})
+        for (const char *name : {"glass-block", "fog-block", "skin-block"})
             for (const char *integrator : {"vcm", "bpm"}) {
-                const std::string source = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/transport/" + name + ".pbrt";
+                const bool is_skin = std::string(name) == "skin-block";
+                const std::string source = std::string(CAUSTICA_SOURCE_DIR) + "/scenes/transport/" +
+                                           (is_skin ? "glass-block" : name) + ".pbrt";
                 std::string images[2];
                 for (const char *mode : {"store", "retrace"}) {
                     const std::string scene = dir + "/" + mode + ".pbrt", out = dir + "/" + mode + ".exr";
                     write_transport_scene(source,
                                           std::string("Integrator \"") + integrator +
                                               "\" \"integer maxdepth\" [ 8 ] \"string lightvertices\" \"" + mode + "\"",
-                                          scene, sphere_as_mesh);
+                                          scene, sphere_as_mesh, is_skin ? skin : "", is_skin ? checks : "");
                     ASSERT_EQ(run_caustica("render " + scene + " --quiet --spp 3 --seed 7 -o " + out), 0) << mode;
                     images[mode[0] == 'r'] = out;
                 }
