@@ -1,13 +1,15 @@
 // What a light subpath leaves behind for the camera pass of an iteration (SmallVCM's light
-// vertex, split in two by use):
+// vertex):
 //
 // - LightVertex: a full scattering vertex, with its BSDF, for vertex connection (a camera vertex
-//   is joined to every vertex of the light path traced for its pixel). It is kept through the
-//   iteration as a StoredLightVertex, without its BSDF, and rebuilt when its pixel's camera path
-//   is traced (SubpathWalk::rebuild): value for value as it was on triangles and bilinear
-//   patches, to rounding on analytic shapes and curves (GeometryScene::interaction).
-// - Photon: the compact record gathered by vertex merging, read in bulk by range queries, so it
-//   is kept small: 32 bytes, 44 with its position in the photon map (spatial/photon_map.h).
+//   is joined to every vertex of the light path traced for its pixel).
+// - StoredLightVertex ("lightvertices" "store", vcm's default): each light vertex kept through
+//   the iteration once, in its group's photon map, where merging reads it as a photon and its
+//   pixel's camera path finds it by identity (PhotonMap::by_id) and shades it again
+//   (SubpathWalk::rebuild): value for value as it was on triangles and bilinear patches, to
+//   rounding on analytic shapes and curves (GeometryScene::interaction).
+// - Photon: all that merging reads, for bpm and "retrace" (which traces a pixel's light path
+//   again for its connections): 32 bytes, 44 with its position in the photon map.
 //
 // Both carry the recursive MIS quantities of Georgiev et al. 2012 ("Implementing vertex
 // connection and merging", tech. report, section 5) at their vertex: see vcm_mis.h. Vertices
@@ -58,30 +60,52 @@ struct Photon {
 
     static constexpr int MaxPathLength = (1 << 15) - 1;
     SampledSpectrum beta() const { return {beta_values[0], beta_values[1], beta_values[2], beta_values[3]}; }
+    Vec3f towards_previous() const { return decode_octahedral(wo); }
+    bool merges() const { return true; }
 };
 
-// A LightVertex through the iteration: its point without the BSDF, and the rest as it was.
+// A LightVertex through the iteration, with its point in the photon map: its photon (every field
+// that Photon has, the direction exact) and its StoredScatteringPoint. The start of a light path
+// in a medium and the exit of a jump are kept too, for connections, though they are not merged
+// at (merges()).
 struct StoredLightVertex {
-    // As LightVertex::beta, unaligned (see Photon).
+    const Medium *medium; // StoredScatteringPoint::medium
+    // The photon's throughput, over sigma_s at a point in a medium (add_photons says why); a
+    // start in a medium keeps its own.
     std::array<float, NumWavelengths> beta_values;
     float d_vcm, d_vc;
-    uint16_t path_length;
-    bool secondary_terminated, after_jump, medium_start;
-    StoredScatteringPoint point;
+    Vec3f wo;
+    SurfaceHit hit;
+    uint16_t normal; // as Photon::normal
+    uint16_t path_length : 15;
+    uint16_t secondary_terminated : 1;
+    uint8_t after_jump : 1, medium_start : 1, exit_lobe : 1, regularized : 1, unused_bits : 4;
+    // Photon maps order records by all their bytes: none is left undefined.
+    uint8_t unused[3];
 
     StoredLightVertex() = default;
-    StoredLightVertex(const LightVertex &v, const StoredScatteringPoint &stored)
-        : beta_values{v.beta[0], v.beta[1], v.beta[2], v.beta[3]}, d_vcm(v.d_vcm), d_vc(v.d_vc),
+    StoredLightVertex(const LightVertex &v, const SampledSpectrum &photon_beta, const StoredScatteringPoint &stored)
+        : medium(stored.medium), beta_values{photon_beta[0], photon_beta[1], photon_beta[2], photon_beta[3]},
+          d_vcm(v.d_vcm), d_vc(v.d_vc), wo(stored.wo), hit(stored.hit),
+          normal(v.point.in_medium() ? uint16_t(0) : encode_octahedral_coarse(v.point.ng)),
           path_length(v.path_length), secondary_terminated(v.secondary_terminated), after_jump(v.after_jump),
-          medium_start(v.medium_start), point(stored) {}
-    // The vertex with its point rebuilt.
-    LightVertex with(const ScatteringPoint &rebuilt) const {
-        return LightVertex{{beta_values[0], beta_values[1], beta_values[2], beta_values[3]},
-                           rebuilt, d_vcm, d_vc, path_length, secondary_terminated, after_jump, medium_start};
+          medium_start(v.medium_start), exit_lobe(stored.exit_lobe), regularized(stored.regularized), unused_bits(0),
+          unused{} {}
+
+    SampledSpectrum beta() const { return {beta_values[0], beta_values[1], beta_values[2], beta_values[3]}; }
+    Vec3f towards_previous() const { return wo; }
+    bool merges() const { return !after_jump && !medium_start; }
+    // The point, found at p.
+    StoredScatteringPoint point(Vec3f p) const { return {p, wo, hit, exit_lobe != 0, regularized != 0, medium}; }
+    // The vertex with its point rebuilt, and beta its throughput.
+    LightVertex with(const ScatteringPoint &rebuilt, const SampledSpectrum &beta) const {
+        LightVertex v{beta, rebuilt, d_vcm, d_vc, uint16_t(path_length), secondary_terminated != 0, after_jump != 0};
+        v.medium_start = medium_start;
+        return v;
     }
 };
 
 static_assert(sizeof(Photon) == 32, "photons are kept compact: see the comment above");
-static_assert(sizeof(StoredLightVertex) <= 96, "vcm keeps one for every light vertex of an iteration");
+static_assert(sizeof(StoredLightVertex) == 72, "vcm keeps one for every light vertex of an iteration, unpadded");
 
 } // namespace caustica

@@ -15,7 +15,6 @@
 #include "integrators/common/path_tracing.h"
 #include "integrators/common/subpath_walk.h"
 #include "integrators/common/transmittance.h"
-#include "integrators/vcm/light_path_store.h"
 #include "integrators/vcm/light_vertex.h"
 #include "integrators/vcm/vcm_mis.h"
 #include "integrators/common/wavelength_groups.h"
@@ -111,19 +110,25 @@ struct TracedLightPath {
 
 // The photons of one wavelength group, either those on surfaces or those in media: the two are
 // never merged with each other (a surface camera vertex gathers over a disk, a medium one over a
-// sphere), so each kind has its own map.
+// sphere), so each kind has its own map. With "store", the maps keep every light vertex whole
+// (StoredLightVertex), and a pixel's camera path finds those of its light path by identity.
 using VcmPhotonMap = PhotonMap<Photon>;
+using StoredVertexMap = PhotonMap<StoredLightVertex, true>;
+
+// A photon's throughput: over sigma_s at its own point in a medium (merge_in_medium says why).
+SampledSpectrum photon_beta(const LightVertex &v, const SampledWavelengths &lambda) {
+    if (!v.point.in_medium() || v.medium_start) return v.beta;
+    return over_sigma_s(v.beta, *v.point.medium, v.point.p, lambda);
+}
 
 // Adds the photons of one light path's vertices to its group's maps (none at the exit of a
-// jump, vcm_mis.h, nor at a start in a medium). A photon in a medium keeps its throughput over
-// sigma_s at its own point (merge_in_medium says why).
+// jump, vcm_mis.h, nor at a start in a medium).
 void add_photons(std::span<const LightVertex> path, const SampledWavelengths &lambda, VcmPhotonMap &surface_photons,
                  VcmPhotonMap &medium_photons) {
     for (const LightVertex &v : path) {
         if (v.after_jump || v.medium_start) continue;
         const ScatteringPoint &point = v.point;
-        SampledSpectrum beta = v.beta;
-        if (point.in_medium()) beta = over_sigma_s(beta, *point.medium, point.p, lambda);
+        const SampledSpectrum beta = photon_beta(v, lambda);
         const Photon photon{{beta[0], beta[1], beta[2], beta[3]},
                             v.d_vcm,
                             v.d_vc,
@@ -132,6 +137,59 @@ void add_photons(std::span<const LightVertex> path, const SampledWavelengths &la
                             v.path_length,
                             v.secondary_terminated};
         (point.in_medium() ? medium_photons : surface_photons).add(point.p, photon);
+    }
+}
+
+// Where the vertices of one kept light path are: the identities of its vertices on surfaces and
+// of those in media, each consecutive in path order.
+struct KeptLightPath {
+    uint32_t first_on_surface = 0, on_surface = 0, first_in_medium = 0, in_medium = 0;
+};
+
+// Keeps every vertex of one light path in its group's maps ("store").
+KeptLightPath keep_light_path(std::span<const LightVertex> path, std::span<const StoredScatteringPoint> points,
+                              const SampledWavelengths &lambda, StoredVertexMap &on_surface,
+                              StoredVertexMap &in_medium) {
+    KeptLightPath kept;
+    for (const LightVertex &v : path) ++(v.point.in_medium() ? kept.in_medium : kept.on_surface);
+    if (kept.on_surface) kept.first_on_surface = on_surface.take_ids(kept.on_surface);
+    if (kept.in_medium) kept.first_in_medium = in_medium.take_ids(kept.in_medium);
+    uint32_t next_on_surface = kept.first_on_surface, next_in_medium = kept.first_in_medium;
+    for (size_t i = 0; i < path.size(); ++i) {
+        const LightVertex &v = path[i];
+        const StoredLightVertex stored(v, photon_beta(v, lambda), points[i]);
+        if (v.point.in_medium())
+            in_medium.add(v.point.p, next_in_medium++, stored);
+        else
+            on_surface.add(v.point.p, next_on_surface++, stored);
+    }
+    return kept;
+}
+
+// The light path that keep_light_path kept, with each vertex that a camera vertex can be joined
+// to within maxdepth (complete_at) shaded again in `memory`, in path order (path lengths grow
+// along it; the exit of a jump, which shares its entry's, follows it in the same map), for the
+// wavelengths it had.
+void rebuild_light_path(const Scene &scene, const KeptLightPath &kept, const StoredVertexMap &on_surface,
+                        const StoredVertexMap &in_medium, const SampledWavelengths &lambda, float time, int max_depth,
+                        ScratchBuffer &memory, int samples_per_pixel, std::vector<LightVertex> &path) {
+    SampledWavelengths terminated = lambda;
+    terminated.terminate_secondary();
+    uint32_t s = 0, m = 0;
+    while (s < kept.on_surface || m < kept.in_medium) {
+        const StoredVertexMap::Photon *surface = s < kept.on_surface ? &on_surface.by_id(kept.first_on_surface + s) : nullptr;
+        const StoredVertexMap::Photon *medium = m < kept.in_medium ? &in_medium.by_id(kept.first_in_medium + m) : nullptr;
+        const bool take_surface = !medium || (surface && surface->record.path_length <= medium->record.path_length);
+        const StoredVertexMap::Photon &photon = take_surface ? *surface : *medium;
+        ++(take_surface ? s : m);
+        const StoredLightVertex &v = photon.record;
+        if (v.path_length >= max_depth) continue;
+        const SampledWavelengths &vertex_lambda = v.secondary_terminated ? terminated : lambda;
+        const ScatteringPoint point =
+            SubpathWalk::rebuild(scene, v.point(photon.p), vertex_lambda, time, memory, samples_per_pixel);
+        SampledSpectrum beta = v.beta();
+        if (point.in_medium() && !v.medium_start) beta *= point.medium->properties(point.p, lambda).sigma_s;
+        path.push_back(v.with(point, beta));
     }
 }
 
@@ -388,9 +446,10 @@ struct CameraPathContext {
     const SampledWavelengths &lambda;    // the camera subpath's (possibly terminated) set
     float hero_scale;                    // see in_group_measure
     // What the camera subpath is completed with: the pixel's light subpath, and the photons of
-    // its wavelength group.
+    // its wavelength group (in the maps of kept light vertices with "store", null otherwise).
     const ShadedLightPath &light_path;
     const VcmPhotonMap &surface_photons, &medium_photons;
+    const StoredVertexMap *surface_vertices, *medium_vertices;
 };
 
 // Next-event estimation at a camera vertex: a light sampled and connected (the s = 1
@@ -499,15 +558,16 @@ SampledSpectrum connect_to_medium_start(const CameraPathContext &ctx, const Came
 // surface (tech. report eqs. 42-43), normalised by pi r^2 times the group's light-path count,
 // and by the surface's coverage: light paths land on a partly transparent cut-out only that
 // often (SurfaceInteraction::coverage).
-SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVertex &z) {
+template <class Map>
+SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVertex &z, const Map &photons) {
     const ScatteringPoint &point = z.point;
     const MergeWeights &here = ctx.w.surface;
     SampledSpectrum sum(0.f);
-    ctx.surface_photons.for_each_within(point.p, ctx.it.radius, [&](const Photon &photon) {
+    photons.for_each_within(point.p, ctx.it.radius, [&](const auto &photon) {
         // The merged vertex belongs to both subpaths.
-        if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) return;
+        if (!photon.merges() || photon.path_length + z.path_length - 1 > ctx.it.max_depth) return;
         if (!same_surface(decode_octahedral_coarse(photon.normal), point.ng)) return;
-        const Vec3f wi = decode_octahedral(photon.wo);
+        const Vec3f wi = photon.towards_previous();
         const float cos_ng = abs_dot(wi, point.ng);
         if (cos_ng == 0) return;
         const BxDFEvaluation e = point.bsdf.evaluate(point.wo, wi, TransportMode::Radiance);
@@ -549,14 +609,15 @@ SampledSpectrum merge_on_surface(const CameraPathContext &ctx, const CameraVerte
 // denser fog around a thin spot then come back as fireflies. No cosine appears: the kernel is
 // a sphere, not a disk, and the vertex has no surface. MIS: the merge at a medium vertex has
 // eta = V N_group times the density of the connection ending there (vcm_mis.h).
-SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex &z) {
+template <class Map>
+SampledSpectrum merge_in_medium(const CameraPathContext &ctx, const CameraVertex &z, const Map &photons) {
     const ScatteringPoint &point = z.point;
     const MergeWeights &here = ctx.w.medium;
     const HenyeyGreenstein &phase = point.medium->phase();
     SampledSpectrum sum(0.f);
-    ctx.medium_photons.for_each_within(point.p, ctx.it.medium_radius, [&](const Photon &photon) {
-        if (photon.path_length + z.path_length - 1 > ctx.it.max_depth) return;
-        const Vec3f wi = decode_octahedral(photon.wo);
+    photons.for_each_within(point.p, ctx.it.medium_radius, [&](const auto &photon) {
+        if (!photon.merges() || photon.path_length + z.path_length - 1 > ctx.it.max_depth) return;
+        const Vec3f wi = photon.towards_previous();
         // The phase function is its own sampling density, and symmetric: it is also the density
         // with which the camera (from wo) and the light subpath (from wi) sample each other.
         const float p = phase.p(point.wo, wi);
@@ -581,7 +642,11 @@ SampledSpectrum complete_at(const CameraPathContext &ctx, const CameraVertex &z)
             L += v.medium_start ? connect_to_medium_start(ctx, z, v) : connect(ctx, z, v);
         }
     }
-    L += z.point.in_medium() ? merge_in_medium(ctx, z) : merge_on_surface(ctx, z);
+    if (z.point.in_medium())
+        L += ctx.medium_vertices ? merge_in_medium(ctx, z, *ctx.medium_vertices) : merge_in_medium(ctx, z, ctx.medium_photons);
+    else
+        L += ctx.surface_vertices ? merge_on_surface(ctx, z, *ctx.surface_vertices)
+                                  : merge_on_surface(ctx, z, ctx.surface_photons);
     return L;
 }
 
@@ -604,14 +669,17 @@ float medium_emission_weight(const Scene &scene, const VcmWeights &w, SubpathMis
 SampledSpectrum trace_camera_path(const Iteration &it, IterationPixelContext &pixel, int group,
                                   const CameraRay &camera_ray, SampledWavelengths &lambda,
                                   const ShadedLightPath &light_path, const VcmPhotonMap &surface_photons,
-                                  const VcmPhotonMap &medium_photons) {
+                                  const VcmPhotonMap &medium_photons, const StoredVertexMap *surface_vertices,
+                                  const StoredVertexMap *medium_vertices) {
     const Scene &scene = it.scene;
     Sampler &sampler = pixel.sampler;
     const VcmWeights &w = it.weights[group];
     SampledWavelengths terminated = lambda;
     terminated.terminate_secondary();
     const float hero_scale = lambda.pdf()[0] / terminated.pdf()[0];
-    const CameraPathContext ctx{it, pixel, group, w, lambda, hero_scale, light_path, surface_photons, medium_photons};
+    const CameraPathContext ctx{it,         pixel,           group,          w,
+                                lambda,     hero_scale,      light_path,     surface_photons,
+                                medium_photons, surface_vertices, medium_vertices};
 
     float pdf_lens, pdf_dir;
     scene.camera->pdf_we(camera_ray.ray, &pdf_lens, &pdf_dir);
@@ -727,23 +795,28 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     const bool use_vc = mode_ == Mode::VertexConnectionMerging;
     WavelengthGroups groups(wavelength_groups_, scene.overrides.seed);
 
-    // Per wavelength group.
+    // Light vertices are kept through the iteration only for vcm's connections, and not when
+    // they are traced again instead ("lightvertices" "retrace"): whole, in maps of their own
+    // (which merging reads as it reads photons), without their BSDFs. Otherwise only their
+    // photons are.
+    const bool keep_light_vertices = use_vc && !retrace_light_paths_;
+    // Per wavelength group, the one kind or the other.
     std::deque<VcmPhotonMap> surface_photons, medium_photons;
+    std::deque<StoredVertexMap> surface_vertices, medium_vertices;
     auto photon_blocks = std::make_shared<VcmPhotonMap::Pool>();
+    auto vertex_blocks = std::make_shared<StoredVertexMap::Pool>();
     for (int g = 0; g < wavelength_groups_; ++g) {
         surface_photons.emplace_back(photon_search_, photon_blocks);
         medium_photons.emplace_back(photon_search_, photon_blocks);
+        surface_vertices.emplace_back(photon_search_, vertex_blocks);
+        medium_vertices.emplace_back(photon_search_, vertex_blocks);
     }
-    // Light vertices are kept through the iteration only for vcm's connections, and not when
-    // they are traced again instead ("lightvertices" "retrace"). Each thread keeps its own,
-    // without their BSDFs, and a path as traced or rebuilt.
-    const bool keep_light_vertices = use_vc && !retrace_light_paths_;
-    tbb::enumerable_thread_specific<LightPathStore> light_vertices;
+    std::vector<KeptLightPath> kept_paths(keep_light_vertices ? pixel_count : 0);
+    // A path as traced or rebuilt, per thread.
     tbb::enumerable_thread_specific<TracedLightPath> light_path_in_use;
     // The media that kept light vertices lie in, when a surface made them (a random walk's
     // interior under a textured colour): the vertices' records point to them.
     tbb::enumerable_thread_specific<ScratchBuffer> kept_media;
-    std::vector<std::span<const StoredLightVertex>> light_paths(keep_light_vertices ? pixel_count : 0);
     // One light path per pixel per completed iteration: a resumed render counts those of the
     // iterations it continues from.
     light_paths_traced_ = stats.pixel_samples;
@@ -767,11 +840,12 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
 
         // Pass 1: one light subpath per pixel, connected to the lens, its vertices made photons
         // (and stored, for connections, with "store").
-        for (auto &store : light_vertices) store.clear();
         for (ScratchBuffer &media : kept_media) media.reset();
         for (int g = 0; g < groups.count(); ++g) {
             surface_photons[g].clear();
             medium_photons[g].clear();
+            surface_vertices[g].clear();
+            medium_vertices[g].clear();
         }
         // A group's pixels together, as the camera pass visits them (see there), so that each
         // thread stores the light vertices in the order they are read again.
@@ -782,16 +856,11 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             trace_light_path(LightPathContext{it, pixel, it.weights[g], pixel.sample_scratch,
                                               keep_light_vertices ? &kept_media.local() : nullptr, true},
                              groups.wavelengths(g), path);
-            add_photons(path.vertices, groups.wavelengths(g), surface_photons[g], medium_photons[g]);
-            if (keep_light_vertices) {
-                // Only the vertices that a camera vertex can be joined to within maxdepth
-                // (complete_at): the path's last ones are photons only.
-                LightPathStore &store = light_vertices.local();
-                store.start_path();
-                for (size_t i = 0; i < path.vertices.size() && path.vertices[i].path_length < it.max_depth; ++i)
-                    store.push_back({path.vertices[i], path.points[i]});
-                light_paths[index] = store.path();
-            }
+            if (keep_light_vertices)
+                kept_paths[index] = keep_light_path(path.vertices, path.points, groups.wavelengths(g),
+                                                    surface_vertices[g], medium_vertices[g]);
+            else
+                add_photons(path.vertices, groups.wavelengths(g), surface_photons[g], medium_photons[g]);
             ++traced;
         });
         light_paths_traced_ = traced;
@@ -802,12 +871,13 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
         tbb::parallel_for(0, groups.count(), [&](int g) {
             surface_photons[g].build(radius);
             medium_photons[g].build(medium_radius);
+            surface_vertices[g].build(radius);
+            medium_vertices[g].build(medium_radius);
         });
         uint64_t stored = 0;
-        if (keep_light_vertices)
-            for (const LightPathStore &store : light_vertices) stored += store.size();
-        else
-            for (int g = 0; g < groups.count(); ++g) stored += surface_photons[g].size() + medium_photons[g].size();
+        for (int g = 0; g < groups.count(); ++g)
+            stored += surface_photons[g].size() + medium_photons[g].size() + surface_vertices[g].size() +
+                      medium_vertices[g].size();
         stats.stored_light_vertices = std::max<uint64_t>(stats.stored_light_vertices, stored);
 
         // Pass 2: one camera subpath per pixel, a wavelength group's pixels together, so that the
@@ -819,16 +889,10 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             TracedLightPath &path = light_path_in_use.local();
             path.clear();
             if (keep_light_vertices) {
-                // The pixel's light path of pass 1, shaded again (in this sample's memory) for
-                // the wavelengths each vertex had.
-                SampledWavelengths terminated = groups.wavelengths(g);
-                terminated.terminate_secondary();
-                for (const StoredLightVertex &v : light_paths[index]) {
-                    const SampledWavelengths &lambda = v.secondary_terminated ? terminated : groups.wavelengths(g);
-                    path.vertices.push_back(v.with(SubpathWalk::rebuild(scene, v.point, lambda, it.time,
-                                                                         ctx.sample_scratch,
-                                                                         ctx.sampler.samples_per_pixel())));
-                }
+                // The pixel's light path of pass 1, shaded again in this sample's memory.
+                rebuild_light_path(scene, kept_paths[index], surface_vertices[g], medium_vertices[g],
+                                   groups.wavelengths(g), it.time, it.max_depth, ctx.sample_scratch,
+                                   ctx.sampler.samples_per_pixel(), path.vertices);
             } else if (use_vc) {
                 // The pixel's light path of pass 1 again, from its own random numbers (its BSDFs
                 // in this sample's memory), then back to the camera path's.
@@ -846,7 +910,8 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             SampledSpectrum L(0.f);
             if (auto camera_ray = scene.generate_camera_ray(cs, lambda, ctx.sampler.samples_per_pixel())) {
                 L = trace_camera_path(it, ctx, g, *camera_ray, lambda, light_path, surface_photons[g],
-                                      medium_photons[g]);
+                                      medium_photons[g], keep_light_vertices ? &surface_vertices[g] : nullptr,
+                                      keep_light_vertices ? &medium_vertices[g] : nullptr);
                 if (L.has_non_finite()) {
                     ++ctx.non_finite;
                     L = SampledSpectrum(0.f);

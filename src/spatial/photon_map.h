@@ -13,6 +13,14 @@
 // photons by value (the grid within each bucket, the tree before it is built), and then
 // visit them in an order fixed by the structure.
 //
+// Photons may carry identities (WithIds): a caller that must find particular photons again after
+// build() has reordered them (vcm finds the photons of one light path, to connect to them) takes
+// consecutive identities for them when it adds them, and looks each up by identity (by_id). The
+// identity lives in the photon beside its point, and build() turns the identities into a table
+// in place: after sorting, photon i holds the identity of the photon that stands at i, a
+// permutation, which is inverted so that photon k holds where the photon of identity k now
+// stands. It costs 4 bytes a photon, and the search order ignores it.
+//
 // A point is found when its float squared distance to the center, (dx*dx + dy*dy) + dz*dz, is
 // strictly less than radius*radius, so radius 0 finds nothing and points exactly at the radius
 // are left out. Points, centers and radii are assumed finite; at most 2^32 - 1 photons.
@@ -27,27 +35,38 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <cstddef>
 #include <bit>
 #include <cstdint>
 #include <cstring>
 #include <memory>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace caustica {
 
 enum class PhotonSearch { HashGrid, FlannKdTree };
 
-template <class Record> class PhotonMap {
+template <class Record> struct PlacedRecord {
+    Vec3f p;
+    Record record;
+};
+template <class Record> struct IdentifiedRecord {
+    Vec3f p;
+    uint32_t id; // see above: an identity while photons are added, a position after build()
+    Record record;
+};
+
+template <class Record, bool WithIds = false> class PhotonMap {
   public:
-    struct Photon {
-        Vec3f p;
-        Record record;
-    };
+    using Photon = std::conditional_t<WithIds, IdentifiedRecord<Record>, PlacedRecord<Record>>;
     // Photons are compared word for word, which orders them by value only if they hold no
     // padding. (Records are expected to be packed as well: see each record's own assertion.)
-    static_assert(sizeof(Photon) == sizeof(Vec3f) + sizeof(Record), "a photon must not hold padding");
+    static_assert(sizeof(Photon) == sizeof(Vec3f) + (WithIds ? sizeof(uint32_t) : 0) + sizeof(Record),
+                  "a photon must not hold padding");
     static_assert(sizeof(Photon) % sizeof(uint32_t) == 0, "photons are compared as 32-bit words");
 
     // Maps filled in the same passes share their blocks' pool (block_storage.h) to peak lower.
@@ -56,14 +75,45 @@ template <class Record> class PhotonMap {
         : search_(search), storage_(std::move(pool)) {}
 
     // Empties the map for the next pass, keeping its memory.
-    void clear() { storage_.clear(); }
+    void clear() {
+        storage_.clear();
+        next_id_ = 0;
+    }
     // Safe from any number of threads at once, between clear() and build().
-    void add(Vec3f p, const Record &record) { storage_.push_back(Photon{p, record}); }
+    void add(Vec3f p, const Record &record)
+        requires(!WithIds)
+    {
+        storage_.push_back(Photon{p, record});
+    }
+    // Identities for the next `count` photons: [first, first + count), the returned first. Every
+    // identity taken must be given to one photon (add) before build(). Safe from any number of
+    // threads at once.
+    uint32_t take_ids(uint32_t count)
+        requires WithIds
+    {
+        const uint64_t first = next_id_.fetch_add(count);
+        if (first + count >= uint64_t(1) << 31) throw std::length_error("PhotonMap: more than 2^31 - 1 photons");
+        return uint32_t(first);
+    }
+    void add(Vec3f p, uint32_t id, const Record &record)
+        requires WithIds
+    {
+        storage_.push_back(Photon{p, id, record});
+    }
+    // The photon given identity id, after build().
+    const Photon &by_id(uint32_t id) const
+        requires WithIds
+    {
+        return storage_[storage_[id].id];
+    }
     // A distributed render: replaces the photons this rank added to each map since clear() with
     // those every rank added to it (RenderShare::gather_all, one exchange for all the maps;
     // collective: every rank passes its maps in the same order), so that each rank's maps hold
     // them all, and their queries see the same photons in the same order as one process's maps.
-    static void gather(std::span<PhotonMap *const> maps, const RenderShare &share) {
+    // (Identities would collide across ranks: maps with them are not gathered.)
+    static void gather(std::span<PhotonMap *const> maps, const RenderShare &share)
+        requires(!WithIds)
+    {
         if (share.ranks() == 1) return;
         // Each rank's bytes: per map, its photon count, then its photons.
         std::vector<char> mine;
@@ -103,12 +153,16 @@ template <class Record> class PhotonMap {
         if (search_ == PhotonSearch::HashGrid) {
             grid_.build(storage_.begin(), storage_.end(), max_radius, [](const Photon &photon) { return photon.p; },
                         value_less);
-            return;
+        } else {
+            std::sort(storage_.begin(), storage_.end(), value_less);
+            std::vector<Vec3f> positions(storage_.size());
+            for (size_t i = 0; i < positions.size(); ++i) positions[i] = storage_[i].p;
+            tree_.build(positions, max_radius); // the tree keeps a copy
         }
-        std::sort(storage_.begin(), storage_.end(), value_less);
-        std::vector<Vec3f> positions(storage_.size());
-        for (size_t i = 0; i < positions.size(); ++i) positions[i] = storage_[i].p;
-        tree_.build(positions, max_radius); // the tree keeps a copy
+        if constexpr (WithIds) {
+            if (storage_.size() >= size_t(1) << 31) throw std::length_error("PhotonMap: more than 2^31 - 1 photons");
+            invert_ids();
+        }
     }
 
     // Calls visit(record) for every photon within radius of center; thread-safe after build().
@@ -140,15 +194,46 @@ template <class Record> class PhotonMap {
 
   private:
     // A total order on the photons' values: their 32-bit words compared in turn (inline, unlike
-    // memcmp, which made the sort twice as slow; the first word, x, nearly always decides).
+    // memcmp, which made the sort twice as slow; the first word, x, nearly always decides). An
+    // identity is not a value (it depends on the order threads added photons in), so it is
+    // skipped: photons equal in all else are interchangeable.
     static bool value_less(const Photon &a, const Photon &b) {
         using Words = std::array<uint32_t, sizeof(Photon) / sizeof(uint32_t)>;
         const Words wa = std::bit_cast<Words>(a), wb = std::bit_cast<Words>(b);
-        return std::lexicographical_compare(wa.begin(), wa.end(), wb.begin(), wb.end());
+        constexpr size_t id_word = WithIds ? offsetof(IdentifiedRecord<Record>, id) / sizeof(uint32_t) : wa.size();
+        for (size_t i = 0; i < wa.size(); ++i) {
+            if (i == id_word || wa[i] == wb[i]) continue;
+            return wa[i] < wb[i];
+        }
+        return false;
+    }
+
+    // After sorting, photon i holds the identity of the photon standing at i: a permutation of
+    // [0, size()), inverted here in place, cycle by cycle (marking each entry done by setting
+    // its top bit, which identities below 2^31 leave clear), so that photon k holds the
+    // position of the photon of identity k.
+    void invert_ids() {
+        constexpr uint32_t done = 1u << 31;
+        const uint32_t n = uint32_t(storage_.size());
+        for (uint32_t start = 0; start < n; ++start) {
+            if (storage_[start].id & done) continue;
+            // Along the cycle start -> id(start) -> ...: the photon at `at` has identity `next`,
+            // so the entry of identity `next` becomes `at`.
+            uint32_t at = start, next = storage_[start].id;
+            while (next != start) {
+                const uint32_t following = storage_[next].id;
+                storage_[next].id = at | done;
+                at = next;
+                next = following;
+            }
+            storage_[start].id = at | done;
+        }
+        for (uint32_t i = 0; i < n; ++i) storage_[i].id &= ~done;
     }
 
     PhotonSearch search_;
     BlockStorage<Photon> storage_;
+    std::atomic<uint64_t> next_id_{0};
     HashGrid grid_;
     FlannKdTree tree_;
     // Each querying thread's indices from the tree.

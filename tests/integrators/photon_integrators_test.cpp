@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -81,14 +82,17 @@ void write_transport_scene(const std::string &source, const std::string &integra
 // vcm keeps its light vertices without their BSDFs and shades each again, from the surface hit
 // it kept, when its pixel's camera path is traced ("lightvertices" "store", the default).
 // "retrace" traces each pixel's light path a second time instead, from the same random numbers,
-// and shades it as it goes. The two must give the same image:
-// - value for value where every surface is made of triangles, whose surface records are rebuilt
-//   from the same barycentrics: on surfaces (glass block) and with photons in media (fog block),
-//   for vcm (which connects to the vertices) and bpm (which only merges, and stores none either
-//   way). Negative control (one run, then undone): rebuilding the points in the fog with their
-//   direction reversed changes 3135 of the fog block's values.
-// - within rounding with the blocks' sphere, which is rebuilt from its point rather than from
-//   the ray that found it, so that its normal may move by a few float ulps.
+// and shades it as it goes. The connections are then the same, value for value where every
+// surface is made of triangles (rebuilt from the same barycentrics), to float ulps with the
+// blocks' sphere (rebuilt from its point rather than from the ray that found it). The merges
+// are not quite: "store" merges with the kept vertices, whose directions are exact, "retrace"
+// with photons, whose directions are rounded to 1e-4 radians, and the two maps visit their
+// records in different orders. So each vcm value must lie within 2e-3 of the other's, relative
+// to the larger of the value and 0.01; the largest difference found here is 3.4e-4 (skin
+// block). bpm keeps no light vertex either way: its images must be equal value for value.
+// Negative controls (one run each, then undone): giving the rebuilt light vertices 1% more
+// throughput (which biases only the connections) moves values of every vcm case by 7.4e-3 to
+// 2.2e-2; rebuilding the points in the fog with their direction reversed fails the fog block.
 // The skin block is the glass block made of Disney's random-walk subsurface under a textured
 // colour, whose interior medium is made anew at every entry (DisneyMaterial::interior_medium):
 // light vertices inside it must keep that medium through the iteration, not point into the
@@ -116,13 +120,18 @@ TEST(PhotonIntegratorParameters, RetracedLightPathsGiveTheStoredImage) {
                 }
                 const std::string what = std::string(name) + " " + integrator + (sphere_as_mesh ? " (mesh)" : "");
                 const RgbImage stored = read_rgb(images[0]), retraced = read_rgb(images[1]);
-                if (sphere_as_mesh) {
+                if (std::string(integrator) == "bpm") {
                     expect_identical(stored, retraced, what);
                     continue;
                 }
                 ASSERT_EQ(stored.rgb.size(), retraced.rgb.size());
-                for (size_t i = 0; i < stored.rgb.size(); ++i)
-                    ASSERT_NEAR(stored.rgb[i], retraced.rgb[i], 1e-4f * std::max(1.f, retraced.rgb[i])) << what << " value " << i;
+                double sum = 0;
+                for (size_t i = 0; i < stored.rgb.size(); ++i) {
+                    ASSERT_NEAR(stored.rgb[i], retraced.rgb[i], 2e-3 * std::max(0.01f, std::abs(retraced.rgb[i])))
+                        << what << " value " << i;
+                    sum += retraced.rgb[i];
+                }
+                EXPECT_GT(sum, 0) << what;
             }
 }
 

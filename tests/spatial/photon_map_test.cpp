@@ -266,6 +266,65 @@ TEST_P(PhotonMapTest, QueriesDoNotDependOnWhoAddedWhat) {
     }
 }
 
+// Photons with identities (vcm's kept light vertices): threads take identities in runs of
+// random length and add their photons, each record holding the point's index. After build(),
+// by_id must find every photon by the identity it was given, and queries must visit the records
+// in the same order as a map without identities filled one by one: the identity, which depends
+// on which thread came first, is not part of the order. Many photons share a point, so that the
+// order among them rests on their records alone. Negative controls (one run each, then undone):
+// leaving the identities uninverted fails the look-ups; ordering by the identity too fails the
+// visiting order.
+TEST_P(PhotonMapTest, IdentitiesFindTheirPhotonsWhoeverAddedThem) {
+    Rng rng(31, 32);
+    std::vector<Vec3f> spots(97);
+    for (Vec3f &p : spots) p = uniform_in_box(rng, {0, 0, 0}, {0.3f, 0.3f, 0.3f});
+    std::vector<Vec3f> points(20011);
+    for (size_t i = 0; i < points.size(); ++i) points[i] = spots[i % spots.size()];
+    const float radius = 0.05f;
+    IndexMap serial{GetParam()};
+    for (size_t i = 0; i < points.size(); ++i) serial.add(points[i], uint32_t(i));
+    serial.build(radius);
+
+    PhotonMap<uint32_t, true> identified{GetParam()};
+    constexpr int thread_count = 3;
+    for (int round = 0; round < 2; ++round) {
+        identified.clear();
+        std::vector<uint32_t> point_of_id(points.size(), ~0u);
+        std::vector<std::thread> threads;
+        for (int t = 0; t < thread_count; ++t)
+            threads.emplace_back([&, t] {
+                Rng own{uint64_t(round), uint64_t(t)};
+                std::vector<uint32_t> mine;
+                for (size_t i = 0; i < points.size(); ++i)
+                    if ((i + size_t(round)) % thread_count == size_t(t)) mine.push_back(uint32_t(i));
+                for (size_t next = 0; next < mine.size();) {
+                    const uint32_t run = std::min<uint32_t>(1 + own.next_uint32() % 9, uint32_t(mine.size() - next));
+                    const uint32_t first = identified.take_ids(run);
+                    for (uint32_t k = 0; k < run; ++k, ++next) {
+                        point_of_id[first + k] = mine[next];
+                        identified.add(points[mine[next]], first + k, mine[next]);
+                    }
+                }
+            });
+        for (std::thread &thread : threads) thread.join();
+        identified.build(radius);
+        ASSERT_EQ(identified.size(), points.size());
+        for (uint32_t id = 0; id < points.size(); ++id) {
+            const auto &photon = identified.by_id(id);
+            ASSERT_EQ(photon.record, point_of_id[id]) << "round " << round << " identity " << id;
+            ASSERT_EQ(photon.p, points[point_of_id[id]]);
+        }
+        size_t found = 0;
+        for (const Vec3f &center : spots) {
+            std::vector<uint32_t> order;
+            identified.for_each_within(center, radius, [&](uint32_t index) { order.push_back(index); });
+            ASSERT_EQ(order, visited(serial, center, radius)) << "round " << round;
+            found += order.size();
+        }
+        EXPECT_GT(found, points.size());
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Searches, PhotonMapTest, testing::Values(PhotonSearch::HashGrid, PhotonSearch::FlannKdTree),
                          [](const testing::TestParamInfo<PhotonSearch> &info) {
                              return info.param == PhotonSearch::HashGrid ? "hashgrid" : "flann";
