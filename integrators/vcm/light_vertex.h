@@ -9,9 +9,11 @@
 //   (SubpathWalk::rebuild): value for value as it was on triangles and bilinear patches, to
 //   rounding on analytic shapes and curves (GeometryScene::interaction).
 // - Photon: all that merging reads, for bpm and "retrace" (which traces a pixel's light path
-//   again for its connections): 32 bytes, 44 with its position in the photon map.
+//   again for its connections): 32 bytes, 44 with its position in the photon map. Its direction
+//   is rounded to about 1e-4 radians, so merges with photons differ from merges with kept
+//   vertices by that much.
 //
-// Both carry the recursive MIS quantities of Georgiev et al. 2012 ("Implementing vertex
+// All carry the recursive MIS quantities of Georgiev et al. 2012 ("Implementing vertex
 // connection and merging", tech. report, section 5) at their vertex: see vcm_mis.h. Vertices
 // inside participating media are stored too, flagged as such: they are connected like surface
 // vertices, and their photons go to separate photon maps, gathered only at camera vertices in a

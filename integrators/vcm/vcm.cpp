@@ -838,8 +838,8 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
             it.volume_normalization.push_back(1 / eta_volume);
         }
 
-        // Pass 1: one light subpath per pixel, connected to the lens, its vertices made photons
-        // (and stored, for connections, with "store").
+        // Pass 1: one light subpath per pixel, connected to the lens, its vertices kept (with
+        // "store") or made photons.
         for (ScratchBuffer &media : kept_media) media.reset();
         for (int g = 0; g < groups.count(); ++g) {
             surface_photons[g].clear();

@@ -61,11 +61,12 @@ class VCM final : public Integrator {
     int wavelength_groups_;
     PhotonSearch photon_search_;
     // vcm connects each camera path to the light path traced for its pixel. "store" keeps every
-    // light vertex of the iteration that a connection can use, without its BSDF (a 96-byte
-    // StoredLightVertex besides the 44-byte photon), and shades the pixel's again just before
-    // its camera path; "retrace" keeps only the photons and traces the pixel's light path again,
-    // from the same random numbers, instead: a third of the memory for the time of tracing the
-    // light paths twice. The two give the same image (light_vertex.h says to what precision).
+    // light vertex of the iteration once, without its BSDF, in the photon maps (an 88-byte
+    // StoredLightVertex with its point and identity, which merging reads as a photon), and
+    // shades the pixel's again just before its camera path; "retrace" keeps only 44-byte
+    // photons and traces the pixel's light path again, from the same random numbers, instead:
+    // half the memory for the time of tracing the light paths twice. The two give the same
+    // image, to the precision of the photons' directions (light_vertex.h).
     bool retrace_light_paths_ = false;
     uint64_t light_paths_traced_ = 0;
 };
