@@ -481,9 +481,12 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
 
 SurfaceInteraction GeometryScene::interaction(const SurfaceHit &hit, Vec3f p, Vec3f wo, float time) const {
     // The point stands for the ray's origin at t = 0: analytic shapes project it onto their
-    // surface and curves face their width towards -wo, as they did for the ray.
+    // surface and curves face their width towards -wo, as they did for the ray. The point itself
+    // is kept as intersect() reported it: projected again it may move by an ulp, to the other
+    // side of the surface, where a shadow ray to it can be blocked by the surface itself.
     SurfaceInteraction si;
     fill_interaction(hit, Ray{p, -wo, Infinity, time}, 0, &si);
+    si.p = p;
     si.wo = wo;
     return si;
 }

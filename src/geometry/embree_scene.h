@@ -68,7 +68,7 @@ class GeometryScene {
     // The surface record of a hit that intersect() reported (si.hit), rebuilt from the point si.p
     // and the direction si.wo: the same record, t aside (0 here), except that analytic
     // shapes and curves start from the point rather than from the ray, which may move their
-    // fields by a few float ulps.
+    // other fields (normals, derivatives, (u, v)) by a few float ulps. The point is si.p itself.
     SurfaceInteraction interaction(const SurfaceHit &hit, Vec3f p, Vec3f wo, float time) const;
     // Any hit with 0 < t < ray.t_max.
     bool occluded(const Ray &ray) const;

@@ -102,8 +102,9 @@ TEST(SurfaceHit, RebuildsTheRecordIntersectReportedForEveryKindOfShape) {
         EXPECT_EQ(again.time, si.time);
         EXPECT_EQ(again.wo, si.wo);
         EXPECT_EQ(std::memcmp(&again.hit, &si.hit, sizeof(SurfaceHit)), 0);
-        // From the point rather than the ray, analytic shapes and curves may differ by rounding.
-        expect_near(again.p, si.p, 1e-5f, "p");
+        // The point is kept; from it rather than the ray, analytic shapes and curves may differ
+        // by rounding in the rest.
+        EXPECT_EQ(again.p, si.p);
         EXPECT_NEAR(again.error_scale, si.error_scale, 1e-4f * std::max(1.f, si.error_scale));
         expect_near(again.n, si.n, 1e-4f, "n");
         expect_near(again.shading.n, si.shading.n, 1e-4f, "shading normal");
@@ -112,7 +113,7 @@ TEST(SurfaceHit, RebuildsTheRecordIntersectReportedForEveryKindOfShape) {
         EXPECT_NEAR(again.uv.x, si.uv.x, 1e-4f);
         EXPECT_NEAR(again.uv.y, si.uv.y, 1e-3f);
         // Triangles and patches are rebuilt from the same parameters: the same record.
-        if (hit.primitive != 0 || std::memcmp(&again.p, &si.p, sizeof(Vec3f)) == 0) ++exact;
+        if (std::memcmp(&again.n, &si.n, sizeof(Vec3f)) == 0 && std::memcmp(&again.uv, &si.uv, sizeof(Vec2f)) == 0) ++exact;
     }
     // Every shape was met often enough for the comparison to mean something.
     for (uintptr_t tag = 1; tag <= 10; ++tag) EXPECT_GE(hits_per_shape[tag], 50) << "shape " << tag;
