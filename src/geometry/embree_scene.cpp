@@ -482,8 +482,9 @@ bool GeometryScene::intersect(const Ray &ray, SurfaceInteraction *si) const {
 SurfaceInteraction GeometryScene::interaction(const SurfaceHit &hit, Vec3f p, Vec3f wo, float time) const {
     // The point stands for the ray's origin at t = 0: analytic shapes project it onto their
     // surface and curves face their width towards -wo, as they did for the ray. The point itself
-    // is kept as intersect() reported it: projected again it may move by an ulp, to the other
-    // side of the surface, where a shadow ray to it can be blocked by the surface itself.
+    // is kept as intersect() reported it: projected again it may move by an ulp, and whatever is
+    // seeded from its bits (the ratio tracking of a shadow ray to it through a heterogeneous
+    // medium, HeterogeneousMedium::transmittance) would then draw other random numbers.
     SurfaceInteraction si;
     fill_interaction(hit, Ray{p, -wo, Infinity, time}, 0, &si);
     si.p = p;
