@@ -17,8 +17,10 @@ struct StoredScatteringPoint {
     SurfaceHit hit;           // without a slot: a point in a medium
     bool exit_lobe = false;   // the exit of a jump through a profile solid: its BSDF is the exit lobe
     bool regularized = false; // its BSDF was regularized (SubpathWalk::regularize_after_non_specular_bounces)
-    // A medium point's medium; a surface point's, the medium the path arrived in, from which
-    // the media on its two sides follow (ScatteringPoint::on_surface).
+    // A medium point's medium. A surface point keeps none: rebuilt, the media on its two sides
+    // are its medium interface's, or none, whatever surrounded it. Those who join a vertex to a
+    // rebuilt one (vcm's connections) trace the segment between them through the medium on
+    // their own side.
     const Medium *medium = nullptr;
 
     bool in_medium() const { return hit.slot == SurfaceHit::None; }

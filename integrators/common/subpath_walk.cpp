@@ -89,7 +89,7 @@ BSDF SubpathWalk::surface_bsdf(const Scene &scene, SurfaceInteraction &si, const
 
 StoredScatteringPoint SubpathWalk::stored_vertex() const {
     if (point_.in_medium()) return {point_.p, point_.wo, SurfaceHit{}, false, false, medium_};
-    return {point_.p, point_.wo, si_.hit, after_jump_, regularized_ && !after_jump_, medium_};
+    return {point_.p, point_.wo, si_.hit, after_jump_, regularized_ && !after_jump_, nullptr};
 }
 
 ScatteringPoint SubpathWalk::rebuild(const Scene &scene, const StoredScatteringPoint &stored,

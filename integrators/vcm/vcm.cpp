@@ -40,9 +40,10 @@ VCM::VCM(Mode mode, const ParameterDictionary &params, const Scene &scene)
       photon_search_(read_photon_search(params)) {
     const std::string light_vertices = params.get_one_string("lightvertices", "store");
     const char *name = mode == Mode::VertexConnectionMerging ? "vcm" : "bpm";
-    if (max_depth_ < 0 || max_depth_ > Photon::MaxPathLength)
+    static_assert(StoredLightVertex::MaxPathLength <= Photon::MaxPathLength);
+    if (max_depth_ < 0 || max_depth_ > StoredLightVertex::MaxPathLength)
         throw InputError(params.location("maxdepth"),
-                         "\"maxdepth\" must lie in [0, " + std::to_string(Photon::MaxPathLength) + "]");
+                         "\"maxdepth\" must lie in [0, " + std::to_string(StoredLightVertex::MaxPathLength) + "]");
     if (base_radius_ < 0 || !std::isfinite(base_radius_))
         throw InputError(params.location("radius"), "\"radius\" must be a positive distance (or 0 for the default)");
     if (!(alpha_ > 0 && alpha_ <= 1))
@@ -148,8 +149,8 @@ struct KeptLightPath {
 
 // Keeps every vertex of one light path in its group's maps ("store").
 KeptLightPath keep_light_path(std::span<const LightVertex> path, std::span<const StoredScatteringPoint> points,
-                              const SampledWavelengths &lambda, StoredVertexMap &on_surface,
-                              StoredVertexMap &in_medium) {
+                              const SampledWavelengths &lambda, const GeometryScene &geometry,
+                              StoredVertexMap &on_surface, StoredVertexMap &in_medium) {
     KeptLightPath kept;
     for (const LightVertex &v : path) ++(v.point.in_medium() ? kept.in_medium : kept.on_surface);
     if (kept.on_surface) kept.first_on_surface = on_surface.take_ids(kept.on_surface);
@@ -157,7 +158,7 @@ KeptLightPath keep_light_path(std::span<const LightVertex> path, std::span<const
     uint32_t next_on_surface = kept.first_on_surface, next_in_medium = kept.first_in_medium;
     for (size_t i = 0; i < path.size(); ++i) {
         const LightVertex &v = path[i];
-        const StoredLightVertex stored(v, photon_beta(v, lambda), points[i]);
+        const StoredLightVertex stored(v, photon_beta(v, lambda), points[i], geometry);
         if (v.point.in_medium())
             in_medium.add(v.point.p, next_in_medium++, stored);
         else
@@ -186,9 +187,9 @@ void rebuild_light_path(const Scene &scene, const KeptLightPath &kept, const Sto
         if (v.path_length >= max_depth) continue;
         const SampledWavelengths &vertex_lambda = v.secondary_terminated ? terminated : lambda;
         const ScatteringPoint point =
-            SubpathWalk::rebuild(scene, v.point(photon.p), vertex_lambda, time, memory, samples_per_pixel);
+            SubpathWalk::rebuild(scene, v.point(photon.p, scene.geometry), vertex_lambda, time, memory, samples_per_pixel);
         SampledSpectrum beta = v.beta();
-        if (point.in_medium() && !v.medium_start) beta *= point.medium->properties(point.p, lambda).sigma_s;
+        if (point.in_medium() && !v.medium_start()) beta *= point.medium->properties(point.p, lambda).sigma_s;
         path.push_back(v.with(point, beta));
     }
 }
@@ -799,7 +800,12 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     // they are traced again instead ("lightvertices" "retrace"): whole, in maps of their own
     // (which merging reads as it reads photons), without their BSDFs. Otherwise only their
     // photons are.
-    const bool keep_light_vertices = use_vc && !retrace_light_paths_;
+    // Kept vertices name their surfaces by packed hits: a scene with too many shapes for them
+    // (GeometryScene::packs_hits) has its light paths traced again.
+    const bool keep_light_vertices = use_vc && !retrace_light_paths_ && scene.geometry.packs_hits();
+    if (use_vc && !retrace_light_paths_ && !keep_light_vertices)
+        note("vcm: the scene places more than 2^32 shapes, more than kept light vertices can name; "
+             "its light paths are traced again instead (\"lightvertices\" \"retrace\")");
     // Per wavelength group, the one kind or the other.
     std::deque<VcmPhotonMap> surface_photons, medium_photons;
     std::deque<StoredVertexMap> surface_vertices, medium_vertices;
@@ -858,7 +864,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
                              groups.wavelengths(g), path);
             if (keep_light_vertices)
                 kept_paths[index] = keep_light_path(path.vertices, path.points, groups.wavelengths(g),
-                                                    surface_vertices[g], medium_vertices[g]);
+                                                    scene.geometry, surface_vertices[g], medium_vertices[g]);
             else
                 add_photons(path.vertices, groups.wavelengths(g), surface_photons[g], medium_photons[g]);
             ++traced;

@@ -61,12 +61,13 @@ class VCM final : public Integrator {
     int wavelength_groups_;
     PhotonSearch photon_search_;
     // vcm connects each camera path to the light path traced for its pixel. "store" keeps every
-    // light vertex of the iteration once, without its BSDF, in the photon maps (an 88-byte
+    // light vertex of the iteration once, without its BSDF, in the photon maps (a 60-byte
     // StoredLightVertex with its point and identity, which merging reads as a photon), and
     // shades the pixel's again just before its camera path; "retrace" keeps only 44-byte
     // photons and traces the pixel's light path again, from the same random numbers, instead:
-    // half the memory for the time of tracing the light paths twice. The two give the same
-    // image, to the precision of the photons' directions (light_vertex.h).
+    // three quarters of the memory for the time of tracing the light paths twice. The two give
+    // the same image, to the precision of the kept vertices' directions and hits
+    // (light_vertex.h).
     bool retrace_light_paths_ = false;
     uint64_t light_paths_traced_ = 0;
 };

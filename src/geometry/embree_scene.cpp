@@ -439,6 +439,14 @@ void GeometryScene::commit() {
     if (committed_) throw std::logic_error("GeometryScene::commit called twice");
     rtcCommitScene(scene_);
     check_device("building the acceleration structure");
+    first_packed_shape_.reserve(slots_.size() + 1);
+    uint64_t shapes = 0;
+    for (const Slot &slot : slots_) {
+        first_packed_shape_.push_back(shapes);
+        shapes += slot.instance < 0 ? 1 : prototypes_[instances_[slot.instance].prototype].primitives.size();
+    }
+    first_packed_shape_.push_back(shapes);
+    packs_hits_ = shapes < SurfaceHit::None;
     committed_ = true;
 }
 
@@ -490,6 +498,25 @@ SurfaceInteraction GeometryScene::interaction(const SurfaceHit &hit, Vec3f p, Ve
     si.p = p;
     si.wo = wo;
     return si;
+}
+
+PackedSurfaceHit GeometryScene::pack(const SurfaceHit &hit) const {
+    if (!packs_hits_) throw std::logic_error("GeometryScene::pack: the scene has too many shapes to pack its hits");
+    const uint64_t first = first_packed_shape_[hit.slot];
+    const uint32_t shape = uint32_t(hit.geometry == SurfaceHit::None ? first : first + hit.geometry);
+    return {shape, hit.primitive, PackedSurfaceHit::quantise(hit.uv.x), PackedSurfaceHit::quantise(hit.uv.y)};
+}
+
+SurfaceHit GeometryScene::unpack(const PackedSurfaceHit &packed) const {
+    // The slot whose shapes include the packed one: the last that starts at or before it.
+    const auto after = std::upper_bound(first_packed_shape_.begin(), first_packed_shape_.end(), uint64_t(packed.shape));
+    const uint32_t slot = uint32_t(after - first_packed_shape_.begin() - 1);
+    SurfaceHit hit;
+    hit.slot = slot;
+    if (slots_[slot].instance >= 0) hit.geometry = uint32_t(packed.shape - first_packed_shape_[slot]);
+    hit.primitive = packed.primitive;
+    hit.uv = {PackedSurfaceHit::dequantise(packed.u), PackedSurfaceHit::dequantise(packed.v)};
+    return hit;
 }
 
 void GeometryScene::fill_interaction(const SurfaceHit &hit, const Ray &ray, float t, SurfaceInteraction *si) const {

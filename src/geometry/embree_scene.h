@@ -70,6 +70,12 @@ class GeometryScene {
     // shapes and curves start from the point rather than from the ray, which may move their
     // other fields (normals, derivatives, (u, v)) by a few float ulps. The point is si.p itself.
     SurfaceInteraction interaction(const SurfaceHit &hit, Vec3f p, Vec3f wo, float time) const;
+    // Hits in 12 bytes (PackedSurfaceHit), for scenes whose shapes, each instance's counted once
+    // per instance, number fewer than 2^32 - 1 (packs_hits()); unpack(pack(hit)) is hit with its
+    // (u, v) rounded.
+    bool packs_hits() const { return packs_hits_; }
+    PackedSurfaceHit pack(const SurfaceHit &hit) const;
+    SurfaceHit unpack(const PackedSurfaceHit &packed) const;
     // Any hit with 0 < t < ray.t_max.
     bool occluded(const Ray &ray) const;
 
@@ -114,6 +120,9 @@ class GeometryScene {
     std::vector<Slot> slots_;
     std::vector<Prototype> prototypes_;
     std::vector<Instance> instances_;
+    // Per slot, the packed index of its first shape, and the shape count after the last slot.
+    std::vector<uint64_t> first_packed_shape_;
+    bool packs_hits_ = false;
     // What Embree's callbacks read for each geometry (embree_scene.cpp).
     std::vector<std::unique_ptr<EmbreeCallbackData>> callback_data_;
     size_t shape_count_ = 0, triangle_count_ = 0, moving_instances_ = 0;

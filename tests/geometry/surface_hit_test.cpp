@@ -7,7 +7,9 @@
 #include "geometry_test_util.h"
 
 #include <cstring>
+#include <algorithm>
 #include <map>
+#include <set>
 
 namespace caustica {
 namespace {
@@ -118,6 +120,42 @@ TEST(SurfaceHit, RebuildsTheRecordIntersectReportedForEveryKindOfShape) {
     // Every shape was met often enough for the comparison to mean something.
     for (uintptr_t tag = 1; tag <= 10; ++tag) EXPECT_GE(hits_per_shape[tag], 50) << "shape " << tag;
     EXPECT_GT(exact, 10000);
+}
+
+// Packed (GeometryScene::pack), a hit keeps its slot, its instance's shape and its primitive, and
+// its (u, v) to half a 16-bit step; every shape, instanced ones included, packs to an index of
+// its own.
+TEST(SurfaceHit, PackedHitsComeBackWithTheirParametersRounded) {
+    MixedScene mixed;
+    ASSERT_TRUE(mixed.scene.packs_hits());
+    Rng rng(11, 3);
+    std::map<uintptr_t, std::set<uint32_t>> packed_shapes;
+    const float half_step = 0.5f / 65535 + 1e-7f;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3f o{rng.uniform() * 10 - 5, rng.uniform() * 10 - 5, rng.uniform() * 10 - 5};
+        const Vec3f d{rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.5f};
+        if (length(d) == 0) continue;
+        Ray ray{o, d};
+        ray.time = rng.uniform();
+        SurfaceInteraction si;
+        ASSERT_TRUE(mixed.scene.intersect(ray, &si));
+        const PackedSurfaceHit packed = mixed.scene.pack(si.hit);
+        const SurfaceHit back = mixed.scene.unpack(packed);
+        ASSERT_EQ(back.slot, si.hit.slot);
+        ASSERT_EQ(back.geometry, si.hit.geometry);
+        ASSERT_EQ(back.primitive, si.hit.primitive);
+        EXPECT_NEAR(back.uv.x, std::clamp(si.hit.uv.x, 0.f, 1.f), half_step);
+        EXPECT_NEAR(back.uv.y, std::clamp(si.hit.uv.y, 0.f, 1.f), half_step);
+        EXPECT_EQ(mixed.scene.interaction(back, si.p, si.wo, ray.time).material, si.material);
+        packed_shapes[reinterpret_cast<uintptr_t>(si.material) / 16].insert(packed.shape);
+    }
+    // Ten shapes, the prototype's two placed twice: twelve indices, one per placed shape.
+    std::set<uint32_t> all;
+    for (uintptr_t tag = 1; tag <= 10; ++tag) {
+        EXPECT_EQ(packed_shapes[tag].size(), tag >= 9 ? 2u : 1u) << "shape " << tag;
+        all.insert(packed_shapes[tag].begin(), packed_shapes[tag].end());
+    }
+    EXPECT_EQ(all.size(), 12u);
 }
 
 // A hit of a moving instance is rebuilt where the instance is at the hit's time: rebuilt at
