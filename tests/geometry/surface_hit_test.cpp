@@ -158,6 +158,32 @@ TEST(SurfaceHit, PackedHitsComeBackWithTheirParametersRounded) {
     EXPECT_EQ(all.size(), 12u);
 }
 
+// One 32-bit index names every placed shape, and 2^32 - 1 (SurfaceHit::None) a point in a medium:
+// a scene can pack its hits while it places fewer shapes than that. A prototype of 2^16 spheres
+// placed 2^16 - 1 times packs them (the last instance's hits come back whole); placed 2^16 times,
+// it does not.
+TEST(SurfaceHit, HitsPackWhileThePlacedShapesFitIn32Bits) {
+    auto scene_placing = [](int instances) {
+        auto scene = std::make_unique<GeometryScene>();
+        const auto sphere = test::analytic_group(std::make_shared<Sphere>(Transform{}, false, 1, -1, 1, 360));
+        std::vector<std::pair<std::shared_ptr<const ShapeGroup>, PrimitiveAttributes>> spheres(1 << 16, {sphere, {}});
+        const int prototype = scene->add_prototype(std::move(spheres));
+        for (int i = 0; i < instances; ++i) scene->add_instance(prototype, Transform::translate({3.f * i, 0, 0}));
+        scene->commit();
+        return scene;
+    };
+    const auto fits = scene_placing((1 << 16) - 1);
+    ASSERT_TRUE(fits->packs_hits());
+    SurfaceInteraction si;
+    ASSERT_TRUE(fits->intersect(Ray{{3.f * ((1 << 16) - 2), 0, 5}, {0, 0, -1}}, &si));
+    const PackedSurfaceHit packed = fits->pack(si.hit);
+    EXPECT_EQ(packed.shape, uint64_t((1 << 16) - 2) * (1 << 16) + si.hit.geometry);
+    const SurfaceHit back = fits->unpack(packed);
+    EXPECT_EQ(back.slot, si.hit.slot);
+    EXPECT_EQ(back.geometry, si.hit.geometry);
+    EXPECT_FALSE(scene_placing(1 << 16)->packs_hits());
+}
+
 // A hit of a moving instance is rebuilt where the instance is at the hit's time: rebuilt at
 // another time, the point moves with it.
 TEST(SurfaceHit, MovingInstancesAreRebuiltAtTheirTime) {

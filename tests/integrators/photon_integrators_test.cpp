@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 using namespace caustica::testing;
 
@@ -132,6 +133,40 @@ TEST(PhotonIntegratorParameters, RetracedLightPathsGiveTheStoredImage) {
                 }
                 EXPECT_GT(sum, 0) << what;
             }
+}
+
+// Kept light vertices name their surfaces by one 32-bit index over every placed shape
+// (GeometryScene::pack). A scene placing 2^32 shapes (here 2^16 instances of an object of 2^16
+// spheres, under the floor, out of the light's reach) cannot: vcm says so and traces its light
+// paths again, as "retrace" does, so the two images are the same value for value. Negative
+// control (one run, then undone): keeping the vertices regardless fails the "store" render.
+TEST(PhotonIntegratorParameters, ScenesTooLargeToPackTheirHitsRetraceTheirLightPaths) {
+    const std::string dir = scratch_dir("photon-unpackable");
+    std::string objects = "ObjectBegin \"dots\"\n";
+    for (int i = 0; i < (1 << 16); ++i) objects += "Shape \"sphere\" \"float radius\" [ 0.01 ]\n";
+    objects += "ObjectEnd\nAttributeBegin\nTranslate 0 0 -5\n";
+    for (int i = 0; i < (1 << 16); ++i) objects += "ObjectInstance \"dots\"\n";
+    objects += "AttributeEnd\n";
+    std::string images[2], notes[2];
+    for (const char *mode : {"store", "retrace"}) {
+        const int m = mode[0] == 'r';
+        const std::string scene = dir + "/" + mode + ".pbrt";
+        images[m] = dir + "/" + mode + ".exr";
+        notes[m] = dir + "/" + mode + ".txt";
+        std::ofstream(scene) << "LookAt 0 -3 2  0 0 0  0 0 1\nCamera \"perspective\" \"float fov\" [ 45 ]\n"
+                                "Film \"rgb\" \"integer xresolution\" [ 16 ] \"integer yresolution\" [ 12 ]\n"
+                                "Integrator \"vcm\" \"string lightvertices\" \""
+                             << mode << "\"\nWorldBegin\n"
+                                "LightSource \"point\" \"point3 from\" [ 0 0 2 ] \"blackbody I\" [ 3000 ]\n"
+                             << objects
+                             << "Material \"diffuse\"\n"
+                                "Shape \"bilinearmesh\" \"point3 P\" [ -4 -4 0 4 -4 0 -4 4 0 4 4 0 ]\n"
+                                "Shape \"sphere\" \"float radius\" [ 0.5 ]\n";
+        ASSERT_EQ(run_caustica("render " + scene + " --spp 2 --seed 5 -o " + images[m], notes[m]), 0) << mode;
+    }
+    EXPECT_NE(read_text(notes[0]).find("traced again"), std::string::npos) << read_text(notes[0]);
+    EXPECT_EQ(read_text(notes[1]).find("traced again"), std::string::npos) << read_text(notes[1]);
+    expect_identical(read_rgb(images[0]), read_rgb(images[1]), "store on an unpackable scene");
 }
 
 // The film's "maxcomponentvalue" clamps samples, not sppm's photon density estimates (pbrt-v4's
