@@ -60,7 +60,7 @@ struct Photon {
     // surface oriented like the camera vertex's, within 60 degrees (see photon_side.h). Unused
     // for a photon in a medium (photons in media are kept in maps of their own).
     uint16_t normal;
-    uint16_t path_length : 15; // vcm's "maxdepth" is at most MaxPathLength
+    uint16_t path_length : 15; // at most "maxdepth", which StoredLightVertex::MaxPathLength bounds
     uint16_t secondary_terminated : 1;
 
     static constexpr int MaxPathLength = (1 << 15) - 1;
