@@ -159,10 +159,8 @@ template <class Record, bool WithIds = false> class PhotonMap {
             for (size_t i = 0; i < positions.size(); ++i) positions[i] = storage_[i].p;
             tree_.build(positions, max_radius); // the tree keeps a copy
         }
-        if constexpr (WithIds) {
-            if (storage_.size() >= size_t(1) << 31) throw std::length_error("PhotonMap: more than 2^31 - 1 photons");
-            invert_ids();
-        }
+        // take_ids() has kept the identities, one per photon, below 2^31.
+        if constexpr (WithIds) invert_ids();
     }
 
     // Calls visit(record) for every photon within radius of center; thread-safe after build().
