@@ -804,7 +804,7 @@ void VCM::render(const Scene &scene, const RenderBudget &budget, RenderStats &st
     // (GeometryScene::packs_hits) has its light paths traced again.
     const bool keep_light_vertices = use_vc && !retrace_light_paths_ && scene.geometry.packs_hits();
     if (use_vc && !retrace_light_paths_ && !keep_light_vertices)
-        note("vcm: the scene places more than 2^32 shapes, more than kept light vertices can name; "
+        note("vcm: the scene places 2^32 - 1 shapes or more, more than kept light vertices can name; "
              "its light paths are traced again instead (\"lightvertices\" \"retrace\")");
     // Per wavelength group, the one kind or the other.
     std::deque<VcmPhotonMap> surface_photons, medium_photons;
